@@ -1,0 +1,40 @@
+//! `placecat info FILE --json`.
+
+use placecat::io::{read_path, ReadLimits};
+use serde_json::json;
+use std::path::Path;
+use std::process::ExitCode;
+
+pub fn run(file: &Path, as_json: bool) -> placecat::Result<ExitCode> {
+    let cloud = read_path(file, &ReadLimits::default())?;
+    let pts = &cloud.points;
+    let mut sum = [0f64; 3];
+    for p in pts {
+        for k in 0..3 {
+            if p[k].is_finite() {
+                sum[k] += p[k] as f64;
+            }
+        }
+    }
+    let first: Vec<[f32; 3]> = pts.iter().take(3).copied().collect();
+    let last: Vec<[f32; 3]> = pts[pts.len().saturating_sub(3)..].to_vec();
+    if as_json {
+        let v = json!({
+            "format": cloud.format.name(),
+            "count": pts.len(),
+            "first": first,
+            "last": last,
+            "sum": sum,
+            "finite": cloud.finite_count(),
+        });
+        println!("{v}");
+    } else {
+        println!("file:   {}", file.display());
+        println!("format: {}", cloud.format.name());
+        println!("points: {} ({} finite)", pts.len(), cloud.finite_count());
+        println!("first:  {first:?}");
+        println!("last:   {last:?}");
+        println!("sum:    {sum:?}");
+    }
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,87 @@
+//! Argument parsing and dispatch.
+
+mod describe;
+mod info;
+mod progress;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "placecat",
+    version,
+    about = "Unsupervised place categorisation of 3D lidar scans"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Show what a scan file holds.
+    Info {
+        file: PathBuf,
+        /// Print one JSON object (format, count, first, last, sum).
+        #[arg(long)]
+        json: bool,
+    },
+    /// Compute the NDT-histogram descriptor of every scan.
+    Describe {
+        /// Parameter preset: indoor, outdoor, indoor_bands, perception_oru.
+        #[arg(long, default_value = "indoor")]
+        preset: String,
+        /// JSON file of parameters (fields not given keep the preset's values).
+        #[arg(long)]
+        params: Option<PathBuf>,
+        /// Files or folders (folders: every scan inside, sorted by name).
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+    /// The Delta matrix of described scans, as CSV.
+    Distances {
+        descriptors: PathBuf,
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+}
+
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Info { file, json } => info::run(&file, json),
+        Command::Describe {
+            preset,
+            params,
+            inputs,
+            output,
+        } => describe::run(&preset, params.as_deref(), &inputs, &output),
+        Command::Distances {
+            descriptors,
+            output,
+        } => describe::distances(&descriptors, output.as_deref()),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("placecat: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Write text to a file, or to stdout when no path is given.
+pub(crate) fn write_out(path: Option<&std::path::Path>, text: &str) -> placecat::Result<()> {
+    match path {
+        Some(p) => std::fs::write(p, text)
+            .map_err(|e| placecat::Error::from(e).in_file(p.display().to_string())),
+        None => {
+            print!("{text}");
+            Ok(())
+        }
+    }
+}

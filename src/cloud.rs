@@ -1,0 +1,52 @@
+//! A scan as read from a file: points in the sensor frame, in file order.
+
+use serde::{Deserialize, Serialize};
+
+/// Which format a scan was read from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Format {
+    PlyAscii,
+    PlyBinaryLittleEndian,
+    PlyBinaryBigEndian,
+    PcdAscii,
+    PcdBinary,
+    PcdBinaryCompressed,
+    KittiBin,
+}
+
+impl Format {
+    /// The name used in `placecat info` output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Format::PlyAscii => "ply_ascii",
+            Format::PlyBinaryLittleEndian => "ply_binary_little_endian",
+            Format::PlyBinaryBigEndian => "ply_binary_big_endian",
+            Format::PcdAscii => "pcd_ascii",
+            Format::PcdBinary => "pcd_binary",
+            Format::PcdBinaryCompressed => "pcd_binary_compressed",
+            Format::KittiBin => "kitti_bin",
+        }
+    }
+}
+
+/// Points exactly as the file holds them (non-finite ones included, so that
+/// `info` can show the file as it is); the descriptor drops non-finite points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointCloud {
+    pub format: Format,
+    pub points: Vec<[f32; 3]>,
+}
+
+impl PointCloud {
+    /// Number of points whose three coordinates are all finite.
+    pub fn finite_count(&self) -> usize {
+        self.points.iter().filter(|p| is_finite(p)).count()
+    }
+}
+
+/// True when x, y and z are all finite.
+#[inline]
+pub fn is_finite(p: &[f32; 3]) -> bool {
+    p[0].is_finite() && p[1].is_finite() && p[2].is_finite()
+}

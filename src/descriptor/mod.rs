@@ -1,0 +1,131 @@
+//! The NDT-histogram appearance descriptor (DESIGN.md Sec. 2):
+//! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
+//! [`histogram`] matrices.
+
+pub mod alignment;
+pub mod directions;
+pub mod histogram;
+pub mod ndt_grid;
+pub mod params;
+pub mod shape;
+
+pub use params::{Alignment, DescriptorParams, Metric, Normalisation};
+
+use crate::error::{Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// What the descriptor saw of a scan.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct Summary {
+    /// Finite points used.
+    pub points: usize,
+    /// Non-finite points dropped.
+    pub dropped: usize,
+    /// Voxels with enough points.
+    pub voxels: usize,
+    /// Occupied voxels skipped for having too few points.
+    pub sparse_voxels: usize,
+    pub spherical: usize,
+    pub planar: usize,
+    pub linear: usize,
+    /// Voxels counted in at least one range interval.
+    pub in_range: usize,
+    /// Candidate orientations.
+    pub alignments: usize,
+    /// Fewer classified voxels in range than `min_voxels`: the descriptor
+    /// says little; clustering still uses it, but callers should show this.
+    pub unreliable: bool,
+}
+
+/// A scan's descriptor: one count matrix F per candidate orientation.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Descriptor {
+    pub rows: usize,
+    pub cols: usize,
+    /// Row-major count matrices, one per candidate orientation.
+    pub matrices: Vec<Vec<u32>>,
+    pub summary: Summary,
+}
+
+impl Descriptor {
+    /// |F| of the first candidate (all candidates count the same voxels).
+    pub fn total(&self) -> u64 {
+        self.matrices
+            .first()
+            .map(|m| m.iter().map(|&v| v as u64).sum())
+            .unwrap_or(0)
+    }
+
+    /// Check the shape (for descriptors that came from JSON).
+    pub fn validate(&self) -> Result<()> {
+        if self.matrices.is_empty() {
+            return Err(Error::Mismatch("a descriptor has no matrix".into()));
+        }
+        if self
+            .matrices
+            .iter()
+            .any(|m| m.len() != self.rows * self.cols)
+        {
+            return Err(Error::Mismatch(format!(
+                "a matrix does not have rows x cols = {} x {} entries",
+                self.rows, self.cols
+            )));
+        }
+        if self.total() == 0 {
+            return Err(Error::NoDescriptor("all counts are zero".into()));
+        }
+        Ok(())
+    }
+}
+
+/// Describe a scan given its points (sensor frame, sensor at the origin).
+pub fn describe(points: &[[f32; 3]], params: &DescriptorParams) -> Result<Descriptor> {
+    params.validate()?;
+    let grid = ndt_grid::build(points, params.voxel_size, params.min_points_per_voxel);
+    let cells: Vec<shape::ShapedCell> = grid
+        .cells
+        .iter()
+        .filter_map(|c| shape::classify(c, params.eigen_threshold))
+        .collect();
+    let mut summary = Summary {
+        points: grid.points,
+        dropped: grid.dropped,
+        voxels: grid.cells.len(),
+        sparse_voxels: grid.sparse_voxels,
+        ..Summary::default()
+    };
+    for c in &cells {
+        match c.shape {
+            shape::Shape::Spherical => summary.spherical += 1,
+            shape::Shape::Planar => summary.planar += 1,
+            shape::Shape::Linear => summary.linear += 1,
+        }
+    }
+    let rotations = alignment::candidates(&cells, params);
+    let matrices = histogram::histograms(&cells, &rotations, params);
+    let total: u64 = matrices[0].iter().map(|&v| v as u64).sum();
+    summary.in_range = cells
+        .iter()
+        .filter(|c| {
+            let r = (c.mean[0].powi(2) + c.mean[1].powi(2) + c.mean[2].powi(2)).sqrt();
+            params
+                .ranges
+                .iter()
+                .any(|(lo, hi)| r >= *lo && hi.is_none_or(|h| r < h))
+        })
+        .count();
+    summary.alignments = matrices.len();
+    summary.unreliable = summary.in_range < params.min_voxels;
+    if total == 0 {
+        return Err(Error::NoDescriptor(format!(
+            "no classified voxel in any range interval ({} finite points, {} dropped, {} voxels with >= {} points)",
+            grid.points, grid.dropped, grid.cells.len(), params.min_points_per_voxel
+        )));
+    }
+    Ok(Descriptor {
+        rows: params.rows(),
+        cols: params.cols(),
+        matrices,
+        summary,
+    })
+}

@@ -1,0 +1,241 @@
+//! Descriptor parameters (paper Tab. II) with the `indoor` and `outdoor`
+//! presets, plus the variants of DESIGN.md Sec. 2b. One height band and the
+//! Tab. II values give exactly the paper's descriptor.
+
+use crate::error::{invalid, Result};
+use serde::{Deserialize, Serialize};
+
+/// How candidate orientations are chosen (rotation invariance).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Alignment {
+    /// The paper's canonical frames from the dominant planar normals.
+    Paper,
+    /// z is up: rotate about z only, to the dominant vertical plane.
+    Yaw,
+    /// Trust the sensor's frame.
+    None,
+}
+
+/// How a matrix F is normalised before comparing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Normalisation {
+    /// Divide by |F|, the sum of all entries (paper Eq. 2).
+    Total,
+    /// Divide each column (range interval) by its own sum.
+    PerColumn,
+}
+
+/// The distance between two normalised matrices.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Metric {
+    /// Sum over columns of the L2 norm of the difference (paper Eq. 2).
+    Paper,
+    /// Hellinger distance of the flattened histograms.
+    Hellinger,
+    /// Symmetric chi-squared distance of the flattened histograms.
+    ChiSquared,
+}
+
+/// Every parameter of the descriptor and its distance.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct DescriptorParams {
+    /// Name of the preset these values came from (informational).
+    pub preset: String,
+    /// ns: spherical classes (roughness bins).
+    pub spherical_classes: usize,
+    /// np: planar classes (normal directions on the upper hemisphere).
+    pub planar_classes: usize,
+    /// nl: linear classes (directions on the upper hemisphere).
+    pub linear_classes: usize,
+    /// ta: a direction is dominant if its count >= ta * the largest count.
+    pub ambiguity_threshold: f64,
+    /// te: eigenvalue ratio threshold for linear / planar.
+    pub eigen_threshold: f64,
+    /// B: voxel edge in metres.
+    pub voxel_size: f64,
+    /// Voxels with fewer points are skipped (at least 3).
+    pub min_points_per_voxel: usize,
+    /// Range intervals [lo, hi) in metres; `null` as hi means infinity.
+    pub ranges: Vec<(f64, Option<f64>)>,
+    /// Height band edges in metres relative to the sensor (sorted); empty =
+    /// one band (the paper). k edges give k + 1 bands.
+    pub height_bands: Vec<f64>,
+    pub alignment: Alignment,
+    /// Cap on candidate orientations per scan.
+    pub max_alignments: usize,
+    /// Directions in the fine histogram used to find dominant normals.
+    pub alignment_directions: usize,
+    pub normalisation: Normalisation,
+    pub metric: Metric,
+    /// Scans with fewer classified voxels are flagged unreliable.
+    pub min_voxels: usize,
+}
+
+impl Default for DescriptorParams {
+    fn default() -> Self {
+        Self::indoor()
+    }
+}
+
+impl DescriptorParams {
+    /// Paper Tab. II, indoor.
+    pub fn indoor() -> Self {
+        DescriptorParams {
+            preset: "indoor".into(),
+            spherical_classes: 1,
+            planar_classes: 9,
+            linear_classes: 1,
+            ambiguity_threshold: 0.6,
+            eigen_threshold: 0.05,
+            voxel_size: 0.4,
+            min_points_per_voxel: 5,
+            ranges: vec![
+                (1.0, Some(4.0)),
+                (3.0, Some(6.0)),
+                (5.0, Some(8.0)),
+                (7.0, Some(10.0)),
+                (9.0, Some(12.0)),
+                (11.0, Some(15.0)),
+                (14.0, None),
+            ],
+            height_bands: Vec::new(),
+            alignment: Alignment::Paper,
+            max_alignments: 16,
+            alignment_directions: 400,
+            normalisation: Normalisation::Total,
+            metric: Metric::Paper,
+            min_voxels: 20,
+        }
+    }
+
+    /// Paper Tab. II, outdoor.
+    pub fn outdoor() -> Self {
+        DescriptorParams {
+            preset: "outdoor".into(),
+            ranges: vec![
+                (5.0, Some(8.0)),
+                (7.0, Some(10.0)),
+                (9.0, Some(12.0)),
+                (11.0, Some(15.0)),
+                (14.0, Some(20.0)),
+            ],
+            ..Self::indoor()
+        }
+    }
+
+    /// Close to the public C++ implementation (DESIGN.md Sec. 6), for
+    /// comparison: te = 0.02, at least 3 points, three ranges split at 5 and
+    /// 10 m with the far one left out, per-range normalisation.
+    pub fn perception_oru() -> Self {
+        DescriptorParams {
+            preset: "perception_oru".into(),
+            eigen_threshold: 0.02,
+            min_points_per_voxel: 3,
+            ranges: vec![(0.0, Some(5.0)), (5.0, Some(10.0))],
+            normalisation: Normalisation::PerColumn,
+            ..Self::indoor()
+        }
+    }
+
+    /// Sec. 2b variant: height bands, no far ranges, te = 0.1 (for a sensor
+    /// about 1.2 m above the floor).
+    pub fn indoor_bands() -> Self {
+        DescriptorParams {
+            preset: "indoor_bands".into(),
+            eigen_threshold: 0.1,
+            ranges: vec![
+                (1.0, Some(4.0)),
+                (3.0, Some(6.0)),
+                (5.0, Some(8.0)),
+                (7.0, Some(10.0)),
+            ],
+            height_bands: vec![-0.8, 0.3, 1.5],
+            ..Self::indoor()
+        }
+    }
+
+    /// A preset by name.
+    pub fn preset(name: &str) -> Result<Self> {
+        match name {
+            "indoor" => Ok(Self::indoor()),
+            "outdoor" => Ok(Self::outdoor()),
+            "indoor_bands" => Ok(Self::indoor_bands()),
+            "perception_oru" => Ok(Self::perception_oru()),
+            other => invalid(format!(
+                "unknown preset {other:?} (known: indoor, outdoor, indoor_bands, perception_oru)"
+            )),
+        }
+    }
+
+    /// Rows of F: (ns + np + nl) classes times height bands.
+    pub fn rows(&self) -> usize {
+        (self.spherical_classes + self.planar_classes + self.linear_classes)
+            * (self.height_bands.len() + 1)
+    }
+
+    /// Columns of F: range intervals.
+    pub fn cols(&self) -> usize {
+        self.ranges.len()
+    }
+
+    /// Check every value; the message names the parameter.
+    pub fn validate(&self) -> Result<()> {
+        if self.spherical_classes == 0 || self.planar_classes == 0 || self.linear_classes == 0 {
+            return invalid(
+                "spherical_classes, planar_classes and linear_classes must be at least 1",
+            );
+        }
+        if self.spherical_classes + self.planar_classes + self.linear_classes > 10_000 {
+            return invalid("too many classes (at most 10000)");
+        }
+        if !(self.ambiguity_threshold > 0.0 && self.ambiguity_threshold <= 1.0) {
+            return invalid(format!(
+                "ambiguity_threshold must be in (0, 1], got {}",
+                self.ambiguity_threshold
+            ));
+        }
+        if !(self.eigen_threshold > 0.0 && self.eigen_threshold < 1.0) {
+            return invalid(format!(
+                "eigen_threshold must be in (0, 1), got {}",
+                self.eigen_threshold
+            ));
+        }
+        if !(self.voxel_size.is_finite() && self.voxel_size > 0.0) {
+            return invalid(format!(
+                "voxel_size must be positive, got {}",
+                self.voxel_size
+            ));
+        }
+        if self.min_points_per_voxel < 3 {
+            return invalid(format!(
+                "min_points_per_voxel must be at least 3, got {}",
+                self.min_points_per_voxel
+            ));
+        }
+        if self.ranges.is_empty() {
+            return invalid("ranges must hold at least one interval");
+        }
+        for (lo, hi) in &self.ranges {
+            let ok = lo.is_finite() && *lo >= 0.0 && hi.is_none_or(|h| h > *lo);
+            if !ok {
+                return invalid(format!("range [{lo}, {hi:?}) is not a valid interval"));
+            }
+        }
+        if self.height_bands.iter().any(|h| !h.is_finite())
+            || self.height_bands.windows(2).any(|w| w[0] >= w[1])
+        {
+            return invalid("height_bands must be finite and strictly increasing");
+        }
+        if self.max_alignments == 0 {
+            return invalid("max_alignments must be at least 1");
+        }
+        if !(8..=100_000).contains(&self.alignment_directions) {
+            return invalid("alignment_directions must be in 8..=100000");
+        }
+        Ok(())
+    }
+}

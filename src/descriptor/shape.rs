@@ -1,0 +1,64 @@
+//! Shape classes of a voxel from the eigenvalues of its covariance
+//! (paper Sec. III-A): linear, planar or spherical.
+
+use super::ndt_grid::Cell;
+use nalgebra::{Matrix3, SymmetricEigen};
+use serde::{Deserialize, Serialize};
+
+/// The three shape classes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Shape {
+    Spherical,
+    Planar,
+    Linear,
+}
+
+/// A classified voxel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapedCell {
+    pub mean: [f64; 3],
+    pub shape: Shape,
+    /// lambda1 <= lambda2 <= lambda3, after regularisation.
+    pub eigenvalues: [f64; 3],
+    /// Normal e1 (smallest eigenvalue's eigenvector).
+    pub normal: [f64; 3],
+    /// Direction e3 (largest eigenvalue's eigenvector).
+    pub axis: [f64; 3],
+}
+
+/// Eigen-decompose and classify. None when the covariance is degenerate
+/// (all points equal: no shape to speak of).
+pub fn classify(cell: &Cell, eigen_threshold: f64) -> Option<ShapedCell> {
+    let m = Matrix3::from_fn(|i, j| cell.cov[i][j]);
+    let eig = SymmetricEigen::new(m);
+    let mut order = [0usize, 1, 2];
+    order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
+    let l3 = eig.eigenvalues[order[2]];
+    if !(l3 > 0.0) || !l3.is_finite() {
+        return None;
+    }
+    // Regularise as the NDT literature does: no eigenvalue below l3 / 1000.
+    let floor = l3 / 1000.0;
+    let l1 = eig.eigenvalues[order[0]].max(floor);
+    let l2 = eig.eigenvalues[order[1]].max(floor);
+    let te = eigen_threshold;
+    let shape = if l2 < te * l3 {
+        Shape::Linear
+    } else if l1 < te * l2 {
+        Shape::Planar
+    } else {
+        Shape::Spherical
+    };
+    let col = |k: usize| {
+        let c = eig.eigenvectors.column(order[k]);
+        [c[0], c[1], c[2]]
+    };
+    Some(ShapedCell {
+        mean: cell.mean,
+        shape,
+        eigenvalues: [l1, l2, l3],
+        normal: col(0),
+        axis: col(2),
+    })
+}

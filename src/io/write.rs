@@ -1,0 +1,132 @@
+//! Writers for the formats placecat reads: used by the simulator, by tests
+//! (round trips) and by anyone converting scans.
+
+use crate::error::Result;
+
+/// PLY encodings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlyEncoding {
+    Ascii,
+    BinaryLittleEndian,
+    BinaryBigEndian,
+}
+
+/// Write points as a PLY file with x, y, z of float32 (`double = false`) or
+/// float64.
+pub fn ply(points: &[[f32; 3]], encoding: PlyEncoding, double: bool) -> Vec<u8> {
+    let fmt = match encoding {
+        PlyEncoding::Ascii => "ascii",
+        PlyEncoding::BinaryLittleEndian => "binary_little_endian",
+        PlyEncoding::BinaryBigEndian => "binary_big_endian",
+    };
+    let t = if double { "double" } else { "float" };
+    let mut out = format!(
+        "ply\nformat {fmt} 1.0\ncomment written by placecat\nelement vertex {}\nproperty {t} x\nproperty {t} y\nproperty {t} z\nend_header\n",
+        points.len()
+    )
+    .into_bytes();
+    let width = if double { 24 } else { 12 };
+    out.reserve(points.len() * width);
+    for p in points {
+        match encoding {
+            PlyEncoding::Ascii => {
+                out.extend_from_slice(format!("{} {} {}\n", p[0], p[1], p[2]).as_bytes())
+            }
+            PlyEncoding::BinaryLittleEndian => {
+                for v in p {
+                    if double {
+                        out.extend_from_slice(&(*v as f64).to_le_bytes())
+                    } else {
+                        out.extend_from_slice(&v.to_le_bytes())
+                    }
+                }
+            }
+            PlyEncoding::BinaryBigEndian => {
+                for v in p {
+                    if double {
+                        out.extend_from_slice(&(*v as f64).to_be_bytes())
+                    } else {
+                        out.extend_from_slice(&v.to_be_bytes())
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
+/// PCD DATA kinds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PcdData {
+    Ascii,
+    Binary,
+    BinaryCompressed,
+}
+
+/// Write points as a PCD v0.7 file with float32 x, y, z.
+pub fn pcd(points: &[[f32; 3]], data: PcdData) -> Result<Vec<u8>> {
+    let kind = match data {
+        PcdData::Ascii => "ascii",
+        PcdData::Binary => "binary",
+        PcdData::BinaryCompressed => "binary_compressed",
+    };
+    let n = points.len();
+    let mut out = format!(
+        "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH {n}\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS {n}\nDATA {kind}\n"
+    )
+    .into_bytes();
+    match data {
+        PcdData::Ascii => {
+            for p in points {
+                out.extend_from_slice(format!("{} {} {}\n", p[0], p[1], p[2]).as_bytes());
+            }
+        }
+        PcdData::Binary => {
+            for p in points {
+                for v in p {
+                    out.extend_from_slice(&v.to_le_bytes());
+                }
+            }
+        }
+        PcdData::BinaryCompressed => {
+            let mut raw = Vec::with_capacity(n * 12);
+            for k in 0..3 {
+                for p in points {
+                    raw.extend_from_slice(&p[k].to_le_bytes());
+                }
+            }
+            let packed = match lzf::compress(&raw) {
+                Ok(c) => c,
+                // The crate refuses data it cannot shrink; LZF also allows a
+                // stream of literal runs, which every reader accepts.
+                Err(_) => lzf_literals(&raw),
+            };
+            out.extend_from_slice(&(packed.len() as u32).to_le_bytes());
+            out.extend_from_slice(&(raw.len() as u32).to_le_bytes());
+            out.extend_from_slice(&packed);
+        }
+    }
+    Ok(out)
+}
+
+/// LZF stream of literal runs only (a control byte 0..=31 = run length - 1).
+fn lzf_literals(raw: &[u8]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(raw.len() + raw.len() / 32 + 1);
+    for chunk in raw.chunks(32) {
+        out.push((chunk.len() - 1) as u8);
+        out.extend_from_slice(chunk);
+    }
+    out
+}
+
+/// Write points as a KITTI `.bin` (intensity 0).
+pub fn kitti(points: &[[f32; 3]]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(points.len() * 16);
+    for p in points {
+        for v in p {
+            out.extend_from_slice(&v.to_le_bytes());
+        }
+        out.extend_from_slice(&0f32.to_le_bytes());
+    }
+    out
+}
