@@ -55,8 +55,8 @@ pub fn build(points: &[[f32; 3]], voxel_size: f64, min_points: usize) -> Grid {
         let local = [0, 1, 2].map(|k| q[k] - idx[k] as f64 * voxel_size);
         let e = map.entry((idx[0], idx[1], idx[2])).or_default();
         e.n += 1;
-        for k in 0..3 {
-            e.s[k] += local[k];
+        for (s, l) in e.s.iter_mut().zip(local) {
+            *s += l;
         }
         e.ss[0] += local[0] * local[0];
         e.ss[1] += local[0] * local[1];

@@ -35,7 +35,7 @@ pub fn classify(cell: &Cell, eigen_threshold: f64) -> Option<ShapedCell> {
     let mut order = [0usize, 1, 2];
     order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
     let l3 = eig.eigenvalues[order[2]];
-    if !(l3 > 0.0) || !l3.is_finite() {
+    if l3.is_nan() || l3 <= 0.0 || !l3.is_finite() {
         return None;
     }
     // Regularise as the NDT literature does: no eigenvalue below l3 / 1000.

@@ -133,11 +133,11 @@ pub fn read_path(path: &std::path::Path, limits: &ReadLimits) -> Result<PointClo
 /// Split off the header: returns (header lines, offset of the body). The
 /// header ends with the line that `is_last` accepts; at most `max_len` bytes
 /// are searched, so a file with no end of header fails fast.
-pub(crate) fn split_header<'a>(
-    bytes: &'a [u8],
+pub(crate) fn split_header(
+    bytes: &[u8],
     max_len: usize,
     is_last: impl Fn(&str) -> bool,
-) -> Option<(Vec<&'a str>, usize)> {
+) -> Option<(Vec<&str>, usize)> {
     let mut lines = Vec::new();
     let mut pos = 0;
     while pos < bytes.len() && pos < max_len {

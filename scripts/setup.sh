@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Install what a fresh machine lacks, idempotently: the wasm32 target,
+# wasm-pack, a wasm-bindgen-cli matching Cargo.lock, Debian's chromium and
+# chromedriver, and the npm dev tools. Quick when everything is present.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+say() { echo "[setup] $*" >&2; }
+
+if ! rustup target list --installed 2>/dev/null | grep -q '^wasm32-unknown-unknown$'; then
+  say "adding the wasm32-unknown-unknown target"
+  rustup target add wasm32-unknown-unknown
+fi
+
+if ! command -v wasm-pack >/dev/null 2>&1; then
+  say "building wasm-pack from crates.io (~2 min)"
+  cargo install wasm-pack --locked
+fi
+
+# wasm-pack uses the wasm-bindgen on PATH when its version matches the
+# crate's; otherwise it would try to download one, which cannot work here.
+want=$(grep -A1 '^name = "wasm-bindgen"$' Cargo.lock | sed -n 's/^version = "\(.*\)"/\1/p' | head -1)
+have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}' || true)
+if [ -n "$want" ] && [ "$have" != "$want" ]; then
+  say "building wasm-bindgen-cli $want from crates.io (~2 min)"
+  cargo install wasm-bindgen-cli --version "$want" --locked --force
+fi
+
+if ! command -v chromium >/dev/null 2>&1 || ! command -v chromedriver >/dev/null 2>&1; then
+  say "installing Debian's chromium and chromium-driver"
+  SUDO=""; [ "$(id -u)" = 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq chromium chromium-driver >/dev/null
+fi
+
+if [ ! -d node_modules ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  say "installing npm dev tools"
+  npm ci --no-audit --no-fund --loglevel=error
+fi

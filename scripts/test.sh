@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# `npm test`: every test. Rust (unit, integration, CLI), lint, then the wasm
+# build in headless Chromium and in Node, the npm package consumption test,
+# and the browser end-to-end tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+
+step() { echo; echo "=== $* ==="; }
+
+step "cargo fmt --check"
+cargo fmt --check
+
+step "cargo clippy"
+cargo clippy --all-targets --release -- -D warnings
+
+step "Rust tests"
+cargo test --release
+
+for s in scripts/test-*.sh; do
+  [ -e "$s" ] || continue
+  step "$s"
+  bash "$s"
+done

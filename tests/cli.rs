@@ -1,0 +1,160 @@
+//! The `placecat` command line: the forms other tooling scripts against.
+
+mod common;
+use common::*;
+use placecat::io::write::{self, PlyEncoding};
+use std::process::Command;
+
+fn placecat() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_placecat"))
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("placecat-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn info_json_on_the_real_pcd() {
+    let out = placecat()
+        .args(["info", &format!("{REAL}/pcl_room/room_scan1.pcd"), "--json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["count"], 112586);
+    assert_eq!(v["format"], "pcd_binary_compressed");
+    assert_eq!(v["first"].as_array().unwrap().len(), 3);
+    assert_eq!(v["last"][2].as_array().unwrap().len(), 3);
+    // Recompute the sum from the library's reader.
+    let c = placecat::io::read_scan(
+        &real("pcl_room/room_scan1.pcd"),
+        "x.pcd",
+        &Default::default(),
+    )
+    .unwrap();
+    let sx: f64 = c.points.iter().map(|p| p[0] as f64).sum();
+    assert!((v["sum"][0].as_f64().unwrap() - sx).abs() < 1e-6);
+    assert!((v["first"][0][2].as_f64().unwrap() - 1.6857659816741943).abs() < 1e-7);
+}
+
+#[test]
+fn describe_skips_bad_files_and_distances_write_csv() {
+    let dir = tmp("describe");
+    std::fs::write(
+        dir.join("a_office.ply"),
+        write::ply(&office(1), PlyEncoding::BinaryLittleEndian, false),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("b_corridor.ply"),
+        write::ply(&corridor(2), PlyEncoding::Ascii, false),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("c_broken.ply"),
+        b"ply\nformat ascii 1.0\nelement vertex 5\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("notes.txt"), b"not a scan").unwrap();
+    let out_json = dir.join("d.json");
+    let out = placecat()
+        .args(["describe", "--preset", "indoor"])
+        .arg(&dir)
+        .arg("-o")
+        .arg(&out_json)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("c_broken.ply") && stderr.contains("end_header"),
+        "{stderr}"
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out_json).unwrap()).unwrap();
+    let names: Vec<&str> = v["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["a_office.ply", "b_corridor.ply"]);
+    assert_eq!(
+        v["errors"][0]["file"].as_str().unwrap(),
+        dir.join("c_broken.ply").display().to_string()
+    );
+    assert_eq!(v["params"]["preset"], "indoor");
+
+    let csv_path = dir.join("d.csv");
+    let out = placecat()
+        .arg("distances")
+        .arg(&out_json)
+        .arg("-o")
+        .arg(&csv_path)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let csv = std::fs::read_to_string(&csv_path).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "file,a_office.ply,b_corridor.ply");
+    let row: Vec<&str> = lines[1].split(',').collect();
+    assert_eq!(row[0], "a_office.ply");
+    assert_eq!(row[1], "0");
+    assert!(row[2].parse::<f32>().unwrap() > 0.0);
+    assert_eq!(lines[2].split(',').nth(1), Some(row[2]));
+}
+
+#[test]
+fn describe_with_params_file_and_all_failing_exits_nonzero() {
+    let dir = tmp("params");
+    std::fs::write(
+        dir.join("p.json"),
+        r#"{"voxel_size": 0.5, "height_bands": [0.0]}"#,
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("s.ply"),
+        write::ply(&office(3), PlyEncoding::BinaryBigEndian, true),
+    )
+    .unwrap();
+    let out = placecat()
+        .args(["describe", "--params"])
+        .arg(dir.join("p.json"))
+        .arg(dir.join("s.ply"))
+        .arg("-o")
+        .arg(dir.join("o.json"))
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("o.json")).unwrap()).unwrap();
+    assert_eq!(v["params"]["voxel_size"], 0.5);
+    assert_eq!(v["files"][0]["descriptor"]["rows"], 22);
+
+    std::fs::write(dir.join("bad.bin"), [1u8, 2, 3]).unwrap();
+    let out = placecat()
+        .arg("describe")
+        .arg(dir.join("bad.bin"))
+        .arg("-o")
+        .arg(dir.join("x.json"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    std::fs::write(dir.join("q.json"), r#"{"voxel_sise": 0.5}"#).unwrap();
+    let out = placecat()
+        .args(["describe", "--params"])
+        .arg(dir.join("q.json"))
+        .arg(dir.join("s.ply"))
+        .arg("-o")
+        .arg(dir.join("y.json"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("voxel_sise"));
+}

@@ -1,0 +1,341 @@
+//! Readers: round trips through every format, the real files, and bad input.
+
+mod common;
+use common::*;
+use placecat::io::write::{self, PcdData, PlyEncoding};
+use placecat::io::{poses, read_scan, read_scan_named, ReadLimits};
+use placecat::Format;
+
+fn cloud() -> Vec<[f32; 3]> {
+    let mut pts = office(1);
+    pts.truncate(2000);
+    pts.push([-1.5e-7, 123456.78, -0.0]);
+    pts
+}
+
+fn read(bytes: &[u8], name: &str) -> placecat::Result<placecat::PointCloud> {
+    read_scan(bytes, name, &ReadLimits::default())
+}
+
+#[test]
+fn every_written_format_reads_back_identical_points() {
+    let pts = cloud();
+    let cases: Vec<(Vec<u8>, &str, Format)> = vec![
+        (
+            write::ply(&pts, PlyEncoding::Ascii, false),
+            "a.ply",
+            Format::PlyAscii,
+        ),
+        (
+            write::ply(&pts, PlyEncoding::Ascii, true),
+            "a.ply",
+            Format::PlyAscii,
+        ),
+        (
+            write::ply(&pts, PlyEncoding::BinaryLittleEndian, false),
+            "a.ply",
+            Format::PlyBinaryLittleEndian,
+        ),
+        (
+            write::ply(&pts, PlyEncoding::BinaryLittleEndian, true),
+            "a.ply",
+            Format::PlyBinaryLittleEndian,
+        ),
+        (
+            write::ply(&pts, PlyEncoding::BinaryBigEndian, false),
+            "a.ply",
+            Format::PlyBinaryBigEndian,
+        ),
+        (
+            write::ply(&pts, PlyEncoding::BinaryBigEndian, true),
+            "a.ply",
+            Format::PlyBinaryBigEndian,
+        ),
+        (
+            write::pcd(&pts, PcdData::Ascii).unwrap(),
+            "a.pcd",
+            Format::PcdAscii,
+        ),
+        (
+            write::pcd(&pts, PcdData::Binary).unwrap(),
+            "a.pcd",
+            Format::PcdBinary,
+        ),
+        (
+            write::pcd(&pts, PcdData::BinaryCompressed).unwrap(),
+            "a.pcd",
+            Format::PcdBinaryCompressed,
+        ),
+        (write::kitti(&pts), "a.bin", Format::KittiBin),
+    ];
+    for (bytes, name, format) in cases {
+        let c = read(&bytes, name).unwrap_or_else(|e| panic!("{format:?}: {e}"));
+        assert_eq!(c.format, format);
+        assert_eq!(c.points, pts, "{format:?} changed the points");
+    }
+}
+
+#[test]
+fn incompressible_pcd_still_round_trips() {
+    // Random bits do not compress; the writer falls back to literal runs.
+    let mut r = rng(3);
+    use rand::Rng;
+    let pts: Vec<[f32; 3]> = (0..500)
+        .map(|_| [r.random(), r.random(), r.random()])
+        .collect();
+    let bytes = write::pcd(&pts, PcdData::BinaryCompressed).unwrap();
+    assert_eq!(read(&bytes, "r.pcd").unwrap().points, pts);
+}
+
+/// A PLY with every scalar type, a list property inside the vertex, and
+/// elements before and after it; x, y, z of different types, out of order.
+fn tricky_ply(encoding: &str) -> Vec<u8> {
+    let header = format!(
+        "ply\nformat {encoding} 1.0\ncomment tricky\nobj_info made by hand\nelement camera 2\nproperty list uchar int ids\nproperty double w\nelement vertex 3\nproperty uchar red\nproperty short z\nproperty list ushort float8 junk\nproperty double y\nproperty char c\nproperty ushort us\nproperty int i\nproperty uint ui\nproperty float32 x\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    )
+    .replace("float8", "float");
+    // red, z, junk list, y, c, us, i, ui, x
+    type Vertex = (u8, i16, Vec<f32>, f64, i8, u16, i32, u32, f32);
+    let verts: [Vertex; 3] = [
+        (
+            1,
+            -3,
+            vec![9.0, 8.0],
+            1.25,
+            -5,
+            7,
+            -70000,
+            4_000_000_000,
+            0.5,
+        ),
+        (2, 4, vec![], -2.5, 6, 8, 3, 9, -1.75),
+        (3, 0, vec![1.0], 1e10, 0, 0, 0, 0, 3.0),
+    ];
+    if encoding == "ascii" {
+        let mut s = header;
+        s.push_str("2 10 20 0.5\n0 1.5\n");
+        for v in &verts {
+            let junk: Vec<String> = v.2.iter().map(|f| f.to_string()).collect();
+            s.push_str(&format!(
+                "{} {} {} {} {} {} {} {} {} {}\n",
+                v.0,
+                v.1,
+                v.2.len(),
+                junk.join(" "),
+                v.3,
+                v.4,
+                v.5,
+                v.6,
+                v.7,
+                v.8
+            ));
+        }
+        s.push_str("3 0 1 2\n");
+        return s.into_bytes();
+    }
+    let le = encoding == "binary_little_endian";
+    let mut b = header.into_bytes();
+    macro_rules! put {
+        ($v:expr) => {
+            if le {
+                b.extend_from_slice(&$v.to_le_bytes())
+            } else {
+                b.extend_from_slice(&$v.to_be_bytes())
+            }
+        };
+    }
+    b.push(2);
+    put!(10i32);
+    put!(20i32);
+    put!(0.5f64);
+    b.push(0);
+    put!(1.5f64);
+    for v in &verts {
+        b.push(v.0);
+        put!(v.1);
+        put!(v.2.len() as u16);
+        for f in &v.2 {
+            put!(*f);
+        }
+        put!(v.3);
+        b.push(v.4 as u8);
+        put!(v.5);
+        put!(v.6);
+        put!(v.7);
+        put!(v.8);
+    }
+    b.push(3);
+    for i in 0..3i32 {
+        put!(i);
+    }
+    b
+}
+
+#[test]
+fn ply_with_lists_other_elements_and_mixed_types() {
+    for enc in ["ascii", "binary_little_endian", "binary_big_endian"] {
+        let c = read(&tricky_ply(enc), "t.ply").unwrap_or_else(|e| panic!("{enc}: {e}"));
+        assert_eq!(
+            c.points,
+            vec![[0.5, 1.25, -3.0], [-1.75, -2.5, 4.0], [3.0, 1e10, 0.0]],
+            "{enc}"
+        );
+    }
+}
+
+#[test]
+fn real_files_read_with_their_header_counts() {
+    for (rel, count, format) in [
+        (
+            "pcl_room/room_scan1.pcd",
+            112586,
+            Format::PcdBinaryCompressed,
+        ),
+        ("velodyne_pair/251370668.pcd", 69088, Format::PcdBinary),
+        ("kitti00/000094.bin", 1945888 / 16, Format::KittiBin),
+        (
+            "ouster_os0_sequence/scan_000.bin",
+            std::fs::metadata(format!("{REAL}/ouster_os0_sequence/scan_000.bin"))
+                .unwrap()
+                .len() as usize
+                / 16,
+            Format::KittiBin,
+        ),
+    ] {
+        let c = read(&real(rel), rel).unwrap();
+        assert_eq!((c.points.len(), c.format), (count, format), "{rel}");
+        assert!(
+            c.finite_count() > count / 2,
+            "{rel}: most points should be finite"
+        );
+    }
+}
+
+#[test]
+fn real_pcd_converted_to_every_format_reads_back_the_same() {
+    let pts = read(&real("pcl_room/room_scan1.pcd"), "x.pcd")
+        .unwrap()
+        .points;
+    for bytes in [
+        write::ply(&pts, PlyEncoding::BinaryBigEndian, true),
+        write::ply(&pts, PlyEncoding::Ascii, false),
+        write::pcd(&pts, PcdData::BinaryCompressed).unwrap(),
+    ] {
+        assert_eq!(read(&bytes, "x.ply").unwrap().points, pts);
+    }
+}
+
+fn err_of(bytes: &[u8], name: &str) -> String {
+    match read_scan_named(bytes, name, &ReadLimits::default()) {
+        Ok(c) => panic!("{name}: read {} points from bad input", c.points.len()),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn truncated_bodies_are_errors_naming_the_file() {
+    let pts = cloud();
+    for (bytes, name) in [
+        (
+            write::ply(&pts, PlyEncoding::BinaryLittleEndian, false),
+            "t.ply",
+        ),
+        (write::ply(&pts, PlyEncoding::Ascii, false), "t.ply"),
+        (write::pcd(&pts, PcdData::Binary).unwrap(), "t.pcd"),
+        (
+            write::pcd(&pts, PcdData::BinaryCompressed).unwrap(),
+            "t.pcd",
+        ),
+        (write::pcd(&pts, PcdData::Ascii).unwrap(), "t.pcd"),
+        (write::kitti(&pts), "t.bin"),
+    ] {
+        let cut = &bytes[..bytes.len() - 100];
+        let e = err_of(cut, name);
+        assert!(
+            e.starts_with(name) && e.contains("truncated") || e.contains("not a whole number"),
+            "{e}"
+        );
+    }
+    for enc in ["binary_little_endian", "binary_big_endian", "ascii"] {
+        let b = tricky_ply(enc);
+        // Cut into the last vertex (the face element after it is 8 to 13 bytes).
+        let e = err_of(&b[..b.len() - 24], "tricky.ply");
+        assert!(e.contains("truncated"), "{enc}: {e}");
+    }
+}
+
+#[test]
+fn lying_headers_fail_before_allocating() {
+    let ply = b"ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n\0\0\0\0";
+    let e = err_of(ply, "huge.ply");
+    assert!(e.contains("limit"), "{e}");
+    let limits = ReadLimits {
+        max_points: usize::MAX,
+        max_bytes: usize::MAX,
+    };
+    let e = read_scan(ply, "huge.ply", &limits).unwrap_err().to_string();
+    assert!(e.contains("truncated"), "{e}");
+    let ascii = b"ply\nformat ascii 1.0\nelement vertex 40000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n";
+    assert!(err_of(ascii, "a.ply").contains("truncated"));
+    let pcd = b"VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 40000000\nHEIGHT 1\nPOINTS 40000000\nDATA binary_compressed\n\x10\0\0\0\0\x10\x27\x09\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0";
+    let e = err_of(pcd, "c.pcd");
+    assert!(e.contains("binary_compressed"), "{e}");
+}
+
+#[test]
+fn malformed_headers_are_clear_errors() {
+    let cases: [(&[u8], &str, &str); 8] = [
+        (b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "n.ply", "end_header"),
+        (b"ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n", "q.ply", "unknown property type"),
+        (b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n", "z.ply", "no property z"),
+        (b"ply\nformat ebcdic 1.0\nend_header\n", "f.ply", "unknown format"),
+        (b"VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F Q\nCOUNT 1 1 1\nPOINTS 1\nDATA binary\n", "t.pcd", "unknown TYPE"),
+        (b"VERSION 0.7\nFIELDS x y\nSIZE 4 4\nTYPE F F\nPOINTS 1\nDATA ascii\n1 2\n", "xy.pcd", "no field z"),
+        (b"", "empty.bin", "empty"),
+        (b"", "empty.ply", "does not start"),
+    ];
+    for (bytes, name, want) in cases {
+        let e = err_of(bytes, name);
+        assert!(e.starts_with(name) && e.contains(want), "{name}: {e}");
+    }
+    assert!(err_of(b"hello", "notes.txt").contains("unrecognised"));
+    assert!(err_of(&[0u8; 17], "odd.bin").contains("16-byte"));
+}
+
+#[test]
+fn nan_coordinates_are_kept_by_the_reader_and_dropped_by_the_descriptor() {
+    let mut pts = office(2);
+    pts[10] = [f32::NAN, 1.0, 1.0];
+    let ascii = write::ply(&pts, PlyEncoding::Ascii, false);
+    let c = read(&ascii, "nan.ply").unwrap();
+    assert_eq!(c.points.len(), pts.len());
+    assert_eq!(c.finite_count(), pts.len() - 1);
+    let d = placecat::describe(&c.points, &placecat::DescriptorParams::indoor()).unwrap();
+    assert_eq!(d.summary.dropped, 1);
+}
+
+#[test]
+fn poses_in_three_formats() {
+    let k = poses::parse(&String::from_utf8(real("kitti00/poses.txt")).unwrap()).unwrap();
+    assert_eq!((k.format, k.poses.len()), (poses::PoseFormat::Kitti, 4));
+    assert!((k.poses[0].position[0] - 81.6380864).abs() < 1e-9);
+    let tum = poses::parse(&poses::to_tum(&k.poses)).unwrap();
+    assert_eq!(tum.format, poses::PoseFormat::Tum);
+    for (a, b) in k.poses.iter().zip(&tum.poses) {
+        assert!((a.yaw - b.yaw).abs() < 1e-6 && (a.position[1] - b.position[1]).abs() < 1e-6);
+    }
+    let again = poses::parse(&poses::to_kitti(&k.poses)).unwrap();
+    assert!((again.poses[3].yaw - k.poses[3].yaw).abs() < 1e-6);
+    let csv = poses::parse("name,x,y,z\na.ply,1,2,3\nb.ply,4,5\n").unwrap();
+    assert_eq!(csv.poses[1].name.as_deref(), Some("b.ply"));
+    assert_eq!(csv.poses[1].position, [4.0, 5.0, 0.0]);
+    for (bad, want) in [
+        ("1 2 3\n", "3 numbers"),
+        ("", "no pose rows"),
+        ("0 1 2 3 0 0 0 5\n", "norm"),
+        ("a,1,x\n", "header but no"),
+    ] {
+        let e = poses::parse(bad).unwrap_err().to_string();
+        assert!(e.contains(want), "{bad:?}: {e}");
+    }
+}

@@ -1,0 +1,58 @@
+//! Real-data sanity: for every scan in groups.csv, its nearest other scan
+//! under Delta is from the same place. No parameter was tuned on this.
+
+mod common;
+use common::*;
+use placecat::io::{read_scan_named, ReadLimits};
+use placecat::{delta_matrix, describe, DescriptorParams, DistanceOptions};
+
+fn check(params: DescriptorParams) {
+    let groups = std::fs::read_to_string(format!("{REAL}/groups.csv")).unwrap();
+    let rows: Vec<(String, String)> = groups
+        .lines()
+        .skip(1)
+        .filter_map(|l| {
+            l.split_once(',')
+                .map(|(f, p)| (f.to_string(), p.to_string()))
+        })
+        .collect();
+    assert_eq!(rows.len(), 18);
+    let descriptors: Vec<_> = rows
+        .iter()
+        .map(|(f, _)| {
+            let c = read_scan_named(&real(f), f, &ReadLimits::default()).unwrap();
+            describe(&c.points, &params).unwrap()
+        })
+        .collect();
+    let m = delta_matrix(&descriptors, DistanceOptions::from(&params)).unwrap();
+    let mut wrong = Vec::new();
+    for i in 0..rows.len() {
+        let nearest = (0..rows.len())
+            .filter(|&j| j != i)
+            .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)))
+            .unwrap();
+        if rows[nearest].1 != rows[i].1 {
+            wrong.push(format!(
+                "{} -> {} ({})",
+                rows[i].0,
+                rows[nearest].0,
+                m.get(i, nearest)
+            ));
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "{}: nearest neighbours from another place: {wrong:?}",
+        params.preset
+    );
+}
+
+#[test]
+fn nearest_scan_is_from_the_same_place_indoor_preset() {
+    check(DescriptorParams::indoor());
+}
+
+#[test]
+fn nearest_scan_is_from_the_same_place_outdoor_preset() {
+    check(DescriptorParams::outdoor());
+}
