@@ -12,10 +12,13 @@
 //! The core knows nothing of the browser; `wasm` holds the JS boundary.
 
 pub mod cloud;
+pub mod cluster;
 pub mod descriptor;
 pub mod distance;
 pub mod error;
+pub mod eval;
 pub mod io;
+pub mod sim;
 
 pub use cloud::{Format, PointCloud};
 pub use descriptor::{describe, Descriptor, DescriptorParams};

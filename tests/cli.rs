@@ -158,3 +158,145 @@ fn describe_with_params_file_and_all_failing_exits_nonzero() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("voxel_sise"));
 }
+
+#[test]
+fn simulate_describe_cluster_evaluate_round_trip() {
+    let dir = tmp("pipeline");
+    let sim = dir.join("sim");
+    let out = placecat()
+        .args([
+            "simulate", "--scene", "indoor", "--seed", "5", "--scans", "3", "-o",
+        ])
+        .arg(&sim)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let labels = std::fs::read_to_string(sim.join("labels.csv")).unwrap();
+    assert_eq!(labels.lines().count(), 16);
+    assert_eq!(labels.lines().nth(1), Some("scan_00000.ply,office"));
+    let kitti =
+        placecat::io::poses::parse(&std::fs::read_to_string(sim.join("poses.txt")).unwrap())
+            .unwrap();
+    let tum =
+        placecat::io::poses::parse(&std::fs::read_to_string(sim.join("poses_tum.txt")).unwrap())
+            .unwrap();
+    assert_eq!((kitti.poses.len(), tum.poses.len()), (15, 15));
+
+    let d = dir.join("d.json");
+    assert!(placecat()
+        .arg("describe")
+        .arg(&sim)
+        .arg("-o")
+        .arg(&d)
+        .status()
+        .unwrap()
+        .success());
+    let run = |args: &[&str], name: &str| -> serde_json::Value {
+        let o = dir.join(name);
+        let out = placecat()
+            .arg("cluster")
+            .arg(&d)
+            .args(args)
+            .arg("-o")
+            .arg(&o)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let ev = placecat()
+            .arg("evaluate")
+            .arg(&o)
+            .arg("--truth")
+            .arg(sim.join("labels.csv"))
+            .output()
+            .unwrap();
+        assert!(
+            ev.status.success(),
+            "{}",
+            String::from_utf8_lossy(&ev.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&ev.stdout).unwrap();
+        for key in ["accuracy", "ari", "score"] {
+            assert!(v[key].as_f64().is_some(), "{key} missing in {v}");
+        }
+        assert_eq!(v["confusion"]["rows"].as_array().unwrap().len(), 5);
+        assert!(v["confusion"]["rates"].is_array());
+        let c: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&o).unwrap()).unwrap();
+        assert_eq!(c["files"].as_array().unwrap().len(), 15);
+        assert_eq!(c["labels"].as_array().unwrap().len(), 15);
+        c
+    };
+    let km = run(
+        &[
+            "--method",
+            "kmeans",
+            "--k",
+            "5",
+            "--seeding",
+            "stride",
+            "--seed",
+            "1",
+        ],
+        "km.json",
+    );
+    assert_eq!(km["k"], 5);
+    let hk = run(
+        &["--method", "hkmeans", "--categories", "5", "--seed", "1"],
+        "hk.json",
+    );
+    assert_eq!(hk["categories"], 5);
+    assert_eq!(hk["tree"]["linkage"].as_array().unwrap().len(), 14);
+    let t = hk["threshold"].as_f64().unwrap();
+    let hk2 = run(
+        &[
+            "--method",
+            "hkmeans",
+            "--threshold",
+            &t.to_string(),
+            "--seed",
+            "1",
+        ],
+        "hk2.json",
+    );
+    assert_eq!(hk2["labels"], hk["labels"]);
+    run(
+        &["--method", "dbscan", "--eps", "0.5", "--min-points", "2"],
+        "db.json",
+    );
+    for (args, want) in [
+        (
+            &["--method", "kmeans", "--k", "0"][..],
+            "k must be at least 1",
+        ),
+        (&["--method", "kmeans", "--k", "16"][..], "more than the 15"),
+        (
+            &["--method", "dbscan", "--eps", "-1", "--min-points", "2"][..],
+            "epsilon",
+        ),
+        (
+            &["--method", "hkmeans", "--threshold", "NaN"][..],
+            "threshold",
+        ),
+        (&["--method", "hkmeans"][..], "exactly one of"),
+    ] {
+        let out = placecat()
+            .arg("cluster")
+            .arg(&d)
+            .args(args)
+            .arg("-o")
+            .arg(dir.join("bad.json"))
+            .output()
+            .unwrap();
+        assert!(!out.status.success());
+        let e = String::from_utf8_lossy(&out.stderr);
+        assert!(e.contains(want), "{args:?}: {e}");
+    }
+}

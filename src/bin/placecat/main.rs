@@ -4,6 +4,11 @@
 //! - `placecat info FILE --json`
 //! - `placecat describe [--preset P] [--params FILE.json] INPUT... -o OUT.json`
 //! - `placecat distances DESCRIPTORS.json [-o OUT.csv]`
+//! - `placecat cluster DESCRIPTORS.json --method kmeans --k K --seeding random|stride|plusplus --seed S -o OUT.json`
+//! - `placecat cluster DESCRIPTORS.json --method hkmeans (--threshold T | --categories K) --seed S -o OUT.json`
+//! - `placecat cluster DESCRIPTORS.json --method dbscan --eps E --min-points C -o OUT.json`
+//! - `placecat evaluate OUT.json --truth labels.csv`
+//! - `placecat simulate --scene indoor|warehouse|outdoor --seed S [--scans N] -o DIR`
 
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;

@@ -1,5 +1,6 @@
 //! Argument parsing and dispatch.
 
+mod cluster;
 mod describe;
 mod info;
 mod progress;
@@ -42,6 +43,53 @@ enum Command {
         #[arg(short, long)]
         output: PathBuf,
     },
+    /// Cluster described scans into categories.
+    Cluster {
+        descriptors: PathBuf,
+        /// kmeans, hkmeans, dbscan, kmedoids.
+        #[arg(long)]
+        method: String,
+        #[arg(long)]
+        k: Option<usize>,
+        /// k-means seeding: random, stride, plusplus.
+        #[arg(long, default_value = "plusplus")]
+        seeding: String,
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// hkmeans: cut the tree at this height.
+        #[arg(long, allow_negative_numbers = true)]
+        threshold: Option<f32>,
+        /// hkmeans: cut the tree where it gives this many categories.
+        #[arg(long)]
+        categories: Option<usize>,
+        /// dbscan: neighbourhood radius (Delta <= eps).
+        #[arg(long, allow_negative_numbers = true)]
+        eps: Option<f32>,
+        /// dbscan: neighbours of a core scan, itself included.
+        #[arg(long = "min-points")]
+        min_points: Option<usize>,
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+    /// Compare cluster labels with ground truth (file,label CSV).
+    Evaluate {
+        clusters: PathBuf,
+        #[arg(long)]
+        truth: PathBuf,
+    },
+    /// Simulate lidar scans with ground truth: PLY scans, poses, labels.csv.
+    Simulate {
+        /// indoor, warehouse, outdoor.
+        #[arg(long)]
+        scene: String,
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// indoor: scans per kind (default 40); others: scans along the path (default 150).
+        #[arg(long)]
+        scans: Option<usize>,
+        #[arg(short, long)]
+        output: PathBuf,
+    },
     /// The Delta matrix of described scans, as CSV.
     Distances {
         descriptors: PathBuf,
@@ -60,6 +108,38 @@ pub fn main() -> ExitCode {
             inputs,
             output,
         } => describe::run(&preset, params.as_deref(), &inputs, &output),
+        Command::Cluster {
+            descriptors,
+            method,
+            k,
+            seeding,
+            seed,
+            threshold,
+            categories,
+            eps,
+            min_points,
+            output,
+        } => cluster::cluster(
+            &descriptors,
+            &cluster::ClusterArgs {
+                method,
+                k,
+                seeding,
+                seed,
+                threshold,
+                categories,
+                eps,
+                min_points,
+            },
+            &output,
+        ),
+        Command::Evaluate { clusters, truth } => cluster::evaluate(&clusters, &truth),
+        Command::Simulate {
+            scene,
+            seed,
+            scans,
+            output,
+        } => cluster::simulate(&scene, seed, scans, &output),
         Command::Distances {
             descriptors,
             output,

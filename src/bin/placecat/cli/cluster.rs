@@ -1,0 +1,203 @@
+//! `placecat cluster`, `placecat evaluate`, `placecat simulate`.
+
+use super::describe::DescriptorSet;
+use super::progress;
+use placecat::cluster::{
+    hkmeans::HkMeansParams, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams,
+    KMedoids, Seeding, Space,
+};
+use placecat::io::write::{self, PlyEncoding};
+use placecat::sim::{SceneKind, SimParams, Simulation};
+use placecat::{Descriptor, DistanceOptions, Error, Result};
+use rayon::prelude::*;
+use serde_json::{json, Value};
+use std::path::Path;
+use std::process::ExitCode;
+
+/// Options of `placecat cluster`, as parsed.
+pub struct ClusterArgs {
+    pub method: String,
+    pub k: Option<usize>,
+    pub seeding: String,
+    pub seed: u64,
+    pub threshold: Option<f32>,
+    pub categories: Option<usize>,
+    pub eps: Option<f32>,
+    pub min_points: Option<usize>,
+}
+
+fn need<T>(v: Option<T>, flag: &str, method: &str) -> Result<T> {
+    v.ok_or_else(|| Error::InvalidParameter(format!("--method {method} needs {flag}")))
+}
+
+pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<ExitCode> {
+    let set = DescriptorSet::load(descriptors)?;
+    let ds: Vec<Descriptor> = set.files.iter().map(|f| f.descriptor.clone()).collect();
+    if ds.is_empty() {
+        return Err(Error::InvalidParameter(format!(
+            "{}: no described files",
+            descriptors.display()
+        )));
+    }
+    let opts = DistanceOptions::from(&set.params);
+    let space = Space::new(&ds, opts)?;
+    let files: Vec<&str> = set.files.iter().map(|f| f.name.as_str()).collect();
+    let mut out = json!({ "files": files, "method": a.method });
+    match a.method.as_str() {
+        "kmeans" => {
+            let k = need(a.k, "--k", "kmeans")?;
+            let seeding: Seeding = a.seeding.parse()?;
+            let r = KMeans::fit(&space, &KMeansParams::new(k).seeding(seeding).seed(a.seed))?;
+            out["labels"] = json!(r.labels);
+            out["k"] = json!(k);
+            out["seeding"] = json!(seeding);
+            out["seed"] = json!(a.seed);
+            out["iterations"] = json!(r.iterations);
+            out["converged"] = json!(r.converged);
+            out["cost"] = json!(r.cost);
+        }
+        "kmedoids" => {
+            let k = need(a.k, "--k", "kmedoids")?;
+            let m = placecat::delta_matrix(&ds, opts)?;
+            let (labels, medoids) = KMedoids::fit(&space, &m, k, a.seed, 100)?;
+            out["labels"] = json!(labels);
+            out["medoids"] = json!(medoids.iter().map(|&i| files[i]).collect::<Vec<_>>());
+        }
+        "hkmeans" => {
+            let m = placecat::delta_matrix(&ds, opts)?;
+            let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(a.seed))?;
+            let cut = match (a.threshold, a.categories) {
+                (Some(t), None) => tree.cut(t)?,
+                (None, Some(k)) => tree.cut_k(k)?,
+                _ => {
+                    return Err(Error::InvalidParameter(
+                        "--method hkmeans needs exactly one of --threshold T or --categories K"
+                            .into(),
+                    ))
+                }
+            };
+            out["labels"] = json!(cut.labels);
+            out["threshold"] = json!(cut.threshold);
+            out["categories"] = json!(cut.nodes.len());
+            out["seed"] = json!(a.seed);
+            out["tree"] = json!({
+                "nodes": tree.nodes.iter().map(|n| json!({"members": n.members, "height": n.height, "children": n.children})).collect::<Vec<Value>>(),
+                "linkage": tree.linkage(),
+            });
+        }
+        "dbscan" => {
+            let eps = need(a.eps, "--eps", "dbscan")?;
+            let c = need(a.min_points, "--min-points", "dbscan")?;
+            let m = placecat::delta_matrix(&ds, opts)?;
+            let labels = Dbscan::fit(&m, &DbscanParams::new(eps, c))?;
+            out["noise"] = json!(labels.iter().filter(|&&l| l < 0).count());
+            out["labels"] = json!(labels);
+            out["eps"] = json!(eps);
+            out["min_points"] = json!(c);
+        }
+        other => {
+            return Err(Error::InvalidParameter(format!(
+                "unknown --method {other:?} (kmeans, hkmeans, dbscan, kmedoids)"
+            )))
+        }
+    }
+    super::write_out(Some(output), &serde_json::to_string(&out)?)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Read a `file,label` CSV (header optional) into (basename, label) pairs.
+pub fn read_truth(path: &Path) -> Result<Vec<(String, String)>> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&name))?;
+    let mut rows = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || (i == 0 && line.eq_ignore_ascii_case("file,label")) {
+            continue;
+        }
+        let Some((f, l)) = line.split_once(',') else {
+            return Err(Error::Csv(format!("line {}: expected file,label", i + 1)).in_file(&name));
+        };
+        rows.push((basename(f.trim()), l.trim().to_string()));
+    }
+    Ok(rows)
+}
+
+fn basename(s: &str) -> String {
+    s.rsplit(['/', '\\']).next().unwrap_or(s).to_string()
+}
+
+pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
+    let name = clusters.display().to_string();
+    let text = std::fs::read_to_string(clusters).map_err(|e| Error::from(e).in_file(&name))?;
+    let v: Value = serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
+    let files: Vec<String> =
+        serde_json::from_value(v["files"].clone()).map_err(|e| Error::from(e).in_file(&name))?;
+    let labels: Vec<i32> =
+        serde_json::from_value(v["labels"].clone()).map_err(|e| Error::from(e).in_file(&name))?;
+    let table: std::collections::HashMap<String, String> = read_truth(truth)?.into_iter().collect();
+    let mut t = Vec::with_capacity(files.len());
+    let mut missing = Vec::new();
+    for f in &files {
+        match table.get(&basename(f)) {
+            Some(l) => t.push(l.clone()),
+            None => missing.push(f.clone()),
+        }
+    }
+    if !missing.is_empty() {
+        return Err(Error::Mismatch(format!(
+            "{} files have no ground-truth label (first: {})",
+            missing.len(),
+            missing[0]
+        ))
+        .in_file(truth.display().to_string()));
+    }
+    let ev = placecat::eval::evaluate(&t, &labels)?;
+    println!("{}", serde_json::to_string_pretty(&ev)?);
+    Ok(ExitCode::SUCCESS)
+}
+
+pub fn simulate(scene: &str, seed: u64, scans: Option<usize>, dir: &Path) -> Result<ExitCode> {
+    let kind: SceneKind = scene.parse()?;
+    let mut p = SimParams::new(kind, seed);
+    if let Some(n) = scans {
+        p.scans = n;
+    }
+    let sim = Simulation::new(&p)?;
+    std::fs::create_dir_all(dir).map_err(|e| Error::from(e).in_file(dir.display().to_string()))?;
+    let bar = progress::bar(sim.len() as u64, "simulating");
+    let meta: Vec<Result<(String, String, placecat::io::poses::Pose)>> = (0..sim.len())
+        .into_par_iter()
+        .map(|i| {
+            let s = sim.scan(i);
+            let path = dir.join(&s.name);
+            std::fs::write(
+                &path,
+                write::ply(&s.points, PlyEncoding::BinaryLittleEndian, false),
+            )
+            .map_err(|e| Error::from(e).in_file(path.display().to_string()))?;
+            bar.inc(1);
+            Ok((s.name, s.label, s.pose))
+        })
+        .collect();
+    bar.finish_and_clear();
+    let meta: Vec<_> = meta.into_iter().collect::<Result<_>>()?;
+    let poses: Vec<_> = meta.iter().map(|m| m.2.clone()).collect();
+    let mut labels = String::from("file,label\n");
+    for (f, l, _) in &meta {
+        labels.push_str(&format!("{f},{l}\n"));
+    }
+    for (file, text) in [
+        ("poses.txt", placecat::io::poses::to_kitti(&poses)),
+        ("poses_tum.txt", placecat::io::poses::to_tum(&poses)),
+        ("labels.csv", labels),
+    ] {
+        super::write_out(Some(&dir.join(file)), &text)?;
+    }
+    eprintln!(
+        "simulated {} {scene} scans (seed {seed}) -> {}",
+        meta.len(),
+        dir.display()
+    );
+    Ok(ExitCode::SUCCESS)
+}

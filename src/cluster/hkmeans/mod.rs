@@ -1,0 +1,10 @@
+//! Hierarchical k-means++ (paper Sec. IV-B): split with 2-means++
+//! recursively down to single scans; a node's height is its diameter.
+
+mod algorithm;
+mod hyperparams;
+mod tree;
+
+pub use algorithm::HierarchicalKMeans;
+pub use hyperparams::HkMeansParams;
+pub use tree::{Cut, Tree, TreeNode};

@@ -1,0 +1,7 @@
+//! k-means with Delta (paper Sec. IV-A) and three seedings.
+
+pub(crate) mod algorithm;
+mod hyperparams;
+
+pub use algorithm::{KMeans, KMeansResult};
+pub use hyperparams::{KMeansParams, Seeding};

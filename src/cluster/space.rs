@@ -1,0 +1,109 @@
+//! The space clustering works in: prepared descriptors, their metric, and
+//! centres (element-wise means of normalised matrices, DESIGN.md Sec. 3).
+
+use crate::descriptor::{Descriptor, Metric};
+use crate::distance::{matrix_distance, prepare_all, size_factor, DistanceOptions, Prepared};
+use crate::error::{Error, Result};
+
+/// Prepared descriptors and the metric to compare them with.
+#[derive(Debug, Clone)]
+pub struct Space {
+    pub items: Vec<Prepared>,
+    pub metric: Metric,
+}
+
+/// A cluster centre: one normalised matrix and the members' mean |F|.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Centre {
+    pub matrix: Vec<f32>,
+    pub total: f32,
+}
+
+impl Space {
+    pub fn new(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<Space> {
+        Ok(Space {
+            items: prepare_all(descriptors, opts)?,
+            metric: opts.metric,
+        })
+    }
+
+    pub fn len(&self) -> usize {
+        self.items.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.items.is_empty()
+    }
+
+    fn shape(&self) -> (usize, usize) {
+        self.items
+            .first()
+            .map(|p| (p.rows, p.cols))
+            .unwrap_or((0, 0))
+    }
+
+    /// Delta between items i and j.
+    pub fn delta(&self, i: usize, j: usize) -> f32 {
+        crate::distance::delta_prepared(&self.items[i], &self.items[j], self.metric)
+    }
+
+    /// Delta from a centre to item i, and the candidate of i that attains it.
+    pub fn to_centre(&self, c: &Centre, i: usize) -> (f32, usize) {
+        let (rows, cols) = self.shape();
+        let item = &self.items[i];
+        let mut best = (f32::INFINITY, 0);
+        for (k, m) in item.matrices.iter().enumerate() {
+            let d = matrix_distance(&c.matrix, m, rows, cols, self.metric);
+            if d < best.0 {
+                best = (d, k);
+            }
+        }
+        (best.0 * size_factor(c.total, item.total), best.1)
+    }
+
+    /// A centre at item i (its first candidate).
+    pub fn centre_of(&self, i: usize) -> Centre {
+        Centre {
+            matrix: self.items[i].matrices[0].clone(),
+            total: self.items[i].total,
+        }
+    }
+
+    /// Mean of the members, each contributing its candidate nearest to
+    /// `near` (the current centre). None for no members.
+    pub fn mean(&self, members: &[usize], near: &Centre) -> Option<Centre> {
+        if members.is_empty() {
+            return None;
+        }
+        let mut matrix = vec![0f32; near.matrix.len()];
+        let mut total = 0f64;
+        for &i in members {
+            let (_, k) = self.to_centre(near, i);
+            for (a, b) in matrix.iter_mut().zip(&self.items[i].matrices[k]) {
+                *a += b;
+            }
+            total += self.items[i].total as f64;
+        }
+        let n = members.len() as f32;
+        matrix.iter_mut().for_each(|v| *v /= n);
+        Some(Centre {
+            matrix,
+            total: (total / members.len() as f64) as f32,
+        })
+    }
+}
+
+/// Reject parameters that cannot apply to n items.
+pub(crate) fn check_k(k: usize, n: usize) -> Result<()> {
+    if k == 0 {
+        return Err(Error::InvalidParameter(
+            "k must be at least 1, got 0".into(),
+        ));
+    }
+    if k > n {
+        return Err(Error::InvalidParameter(format!(
+            "k = {k} is more than the {n} scans to cluster"
+        )));
+    }
+    Ok(())
+}

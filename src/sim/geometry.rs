@@ -1,0 +1,156 @@
+//! Scene primitives and ray intersection for the simulator.
+
+/// A solid primitive the lidar can hit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// Axis-aligned box, min and max corners.
+    Cuboid { min: [f64; 3], max: [f64; 3] },
+    /// Vertical cylinder (tree trunks, pillars).
+    Cylinder {
+        centre: [f64; 2],
+        radius: f64,
+        z0: f64,
+        z1: f64,
+    },
+    /// Sphere (tree crowns, bushes).
+    Sphere { centre: [f64; 3], radius: f64 },
+    /// Ground z = height + amplitude * sin(x / wavelength) * cos(y / wavelength).
+    Ground {
+        height: f64,
+        amplitude: f64,
+        wavelength: f64,
+    },
+}
+
+/// A ray: origin and unit direction.
+#[derive(Debug, Clone, Copy)]
+pub struct Ray {
+    pub o: [f64; 3],
+    pub d: [f64; 3],
+}
+
+impl Shape {
+    /// Distance along the ray to the first hit beyond `t_min`, if any.
+    pub fn hit(&self, ray: &Ray, t_min: f64) -> Option<f64> {
+        let (o, d) = (ray.o, ray.d);
+        match *self {
+            Shape::Cuboid { min, max } => {
+                let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
+                for k in 0..3 {
+                    if d[k].abs() < 1e-12 {
+                        if o[k] < min[k] || o[k] > max[k] {
+                            return None;
+                        }
+                        continue;
+                    }
+                    let inv = 1.0 / d[k];
+                    let (a, b) = ((min[k] - o[k]) * inv, (max[k] - o[k]) * inv);
+                    t0 = t0.max(a.min(b));
+                    t1 = t1.min(a.max(b));
+                }
+                if t0 > t1 {
+                    return None;
+                }
+                // From inside a box the ray hits its far side (rooms are
+                // made of slabs, so this only matters for odd placements).
+                [t0, t1].into_iter().find(|&t| t > t_min)
+            }
+            Shape::Cylinder {
+                centre,
+                radius,
+                z0,
+                z1,
+            } => {
+                let (px, py) = (o[0] - centre[0], o[1] - centre[1]);
+                let a = d[0] * d[0] + d[1] * d[1];
+                if a < 1e-12 {
+                    return None;
+                }
+                let b = px * d[0] + py * d[1];
+                let c = px * px + py * py - radius * radius;
+                let disc = b * b - a * c;
+                if disc < 0.0 {
+                    return None;
+                }
+                let s = disc.sqrt();
+                [(-b - s) / a, (-b + s) / a].into_iter().find(|&t| {
+                    let z = o[2] + t * d[2];
+                    t > t_min && z >= z0 && z <= z1
+                })
+            }
+            Shape::Sphere { centre, radius } => {
+                let p = [o[0] - centre[0], o[1] - centre[1], o[2] - centre[2]];
+                let b = p[0] * d[0] + p[1] * d[1] + p[2] * d[2];
+                let c = p[0] * p[0] + p[1] * p[1] + p[2] * p[2] - radius * radius;
+                let disc = b * b - c;
+                if disc < 0.0 {
+                    return None;
+                }
+                let s = disc.sqrt();
+                [-b - s, -b + s].into_iter().find(|&t| t > t_min)
+            }
+            Shape::Ground {
+                height,
+                amplitude,
+                wavelength,
+            } => {
+                if d[2] >= -1e-9 && amplitude == 0.0 {
+                    return None;
+                }
+                let h = |x: f64, y: f64| {
+                    height + amplitude * (x / wavelength).sin() * (y / wavelength).cos()
+                };
+                if d[2] >= -1e-6 {
+                    return None;
+                }
+                // Start on the mean plane, then a few Newton steps on
+                // f(t) = z(t) - h(x(t), y(t)); the ground is gentle.
+                let mut t = (height - o[2]) / d[2];
+                for _ in 0..4 {
+                    let (x, y, z) = (o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]);
+                    let f = z - h(x, y);
+                    let dh = amplitude / wavelength
+                        * ((x / wavelength).cos() * (y / wavelength).cos() * d[0]
+                            - (x / wavelength).sin() * (y / wavelength).sin() * d[1]);
+                    let df = d[2] - dh;
+                    if df.abs() < 1e-9 {
+                        break;
+                    }
+                    t -= f / df;
+                }
+                (t > t_min && t.is_finite()).then_some(t)
+            }
+        }
+    }
+
+    /// Horizontal distance from (x, y) to the shape's footprint (0 inside);
+    /// infinite shapes are always near.
+    pub fn horizontal_distance(&self, x: f64, y: f64) -> f64 {
+        match *self {
+            Shape::Cuboid { min, max } => {
+                let dx = (min[0] - x).max(0.0).max(x - max[0]);
+                let dy = (min[1] - y).max(0.0).max(y - max[1]);
+                (dx * dx + dy * dy).sqrt()
+            }
+            Shape::Cylinder { centre, radius, .. } => {
+                (((x - centre[0]).powi(2) + (y - centre[1]).powi(2)).sqrt() - radius).max(0.0)
+            }
+            Shape::Sphere { centre, radius } => {
+                (((x - centre[0]).powi(2) + (y - centre[1]).powi(2)).sqrt() - radius).max(0.0)
+            }
+            Shape::Ground { .. } => 0.0,
+        }
+    }
+}
+
+/// Axis-aligned box from its minimum corner and size.
+pub fn cuboid(origin: [f64; 3], size: [f64; 3]) -> Shape {
+    Shape::Cuboid {
+        min: origin,
+        max: [
+            origin[0] + size[0],
+            origin[1] + size[1],
+            origin[2] + size[2],
+        ],
+    }
+}

@@ -1,0 +1,200 @@
+//! A spinning multi-beam lidar, ray-cast into a scene.
+
+use super::geometry::{Ray, Shape};
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+use rand_distr::{Distribution, Normal};
+use serde::{Deserialize, Serialize};
+
+/// The sensor model.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LidarParams {
+    /// Number of beams (rows).
+    pub beams: usize,
+    /// Vertical field of view, lowest and highest beam angle (degrees).
+    pub fov_down: f64,
+    pub fov_up: f64,
+    /// Firings per revolution (columns).
+    pub azimuth_steps: usize,
+    pub min_range: f64,
+    pub max_range: f64,
+    /// Standard deviation of Gaussian range noise (m).
+    pub range_noise: f64,
+    /// Probability that a return is lost.
+    pub dropout: f64,
+}
+
+impl LidarParams {
+    /// A 32-beam indoor sensor (~30k rays).
+    pub fn indoor() -> Self {
+        LidarParams {
+            beams: 32,
+            fov_down: -30.0,
+            fov_up: 30.0,
+            azimuth_steps: 1024,
+            min_range: 0.3,
+            max_range: 40.0,
+            range_noise: 0.01,
+            dropout: 0.02,
+        }
+    }
+    /// A 64-beam outdoor sensor like KITTI's (~115k rays).
+    pub fn outdoor() -> Self {
+        LidarParams {
+            beams: 64,
+            fov_down: -24.8,
+            fov_up: 2.0,
+            azimuth_steps: 1800,
+            min_range: 0.9,
+            max_range: 80.0,
+            range_noise: 0.02,
+            dropout: 0.03,
+        }
+    }
+    pub(crate) fn validate(&self) -> crate::Result<()> {
+        let ok = self.beams > 0
+            && self.azimuth_steps > 0
+            && self.beams * self.azimuth_steps <= 20_000_000
+            && self.fov_down.is_finite()
+            && self.fov_up >= self.fov_down
+            && self.max_range > self.min_range
+            && self.min_range >= 0.0
+            && self.range_noise >= 0.0
+            && (0.0..1.0).contains(&self.dropout);
+        if ok {
+            Ok(())
+        } else {
+            Err(crate::Error::InvalidParameter(format!(
+                "lidar parameters out of range: {self:?}"
+            )))
+        }
+    }
+}
+
+/// Cast every ray from `position` (sensor heading `yaw`) and return the hits
+/// in the sensor frame.
+pub fn scan(
+    shapes: &[Shape],
+    position: [f64; 3],
+    yaw: f64,
+    lidar: &LidarParams,
+    rng: &mut ChaCha8Rng,
+) -> Vec<[f32; 3]> {
+    // Only shapes that can be within range matter, and each ray tests only
+    // the shapes whose azimuth span covers its sector: forests have
+    // hundreds of trees in range (measured: 435 ms -> see benches).
+    let near: Vec<&Shape> = shapes
+        .iter()
+        .filter(|s| s.horizontal_distance(position[0], position[1]) < lidar.max_range)
+        .collect();
+    let sectors = sector_index(&near, position);
+    let noise = Normal::new(0.0, lidar.range_noise.max(1e-12)).expect("finite sigma");
+    let (sy, cy) = yaw.sin_cos();
+    let mut out = Vec::with_capacity(lidar.beams * lidar.azimuth_steps);
+    for b in 0..lidar.beams {
+        let elev = if lidar.beams == 1 {
+            0.0
+        } else {
+            lidar.fov_down + (lidar.fov_up - lidar.fov_down) * b as f64 / (lidar.beams - 1) as f64
+        }
+        .to_radians();
+        let (se, ce) = elev.sin_cos();
+        for a in 0..lidar.azimuth_steps {
+            let az = std::f64::consts::TAU * a as f64 / lidar.azimuth_steps as f64;
+            let (sa, ca) = az.sin_cos();
+            // Direction in the sensor frame, then rotated by the heading.
+            let local = [ce * ca, ce * sa, se];
+            let d = [
+                cy * local[0] - sy * local[1],
+                sy * local[0] + cy * local[1],
+                local[2],
+            ];
+            let ray = Ray { o: position, d };
+            let mut best = lidar.max_range;
+            let world_az = (az + yaw).rem_euclid(std::f64::consts::TAU);
+            let sector =
+                ((world_az / std::f64::consts::TAU * SECTORS as f64) as usize).min(SECTORS - 1);
+            for s in sectors[sector].iter().map(|&k| near[k]) {
+                if let Some(t) = s.hit(&ray, lidar.min_range) {
+                    if t < best {
+                        best = t;
+                    }
+                }
+            }
+            if best >= lidar.max_range || rng.random::<f64>() < lidar.dropout {
+                continue;
+            }
+            let r = best + noise.sample(rng);
+            out.push([
+                (local[0] * r) as f32,
+                (local[1] * r) as f32,
+                (local[2] * r) as f32,
+            ]);
+        }
+    }
+    out
+}
+
+const SECTORS: usize = 180;
+
+/// For each azimuth sector (world frame, seen from `position`), the shapes
+/// that a ray in it can hit.
+fn sector_index(shapes: &[&Shape], position: [f64; 3]) -> Vec<Vec<usize>> {
+    use std::f64::consts::{PI, TAU};
+    let mut out = vec![Vec::new(); SECTORS];
+    let (px, py) = (position[0], position[1]);
+    for (k, s) in shapes.iter().enumerate() {
+        // Angular span (centre, half-width); None = every sector.
+        let span = match **s {
+            Shape::Ground { .. } => None,
+            Shape::Cylinder {
+                centre: [cx, cy],
+                radius,
+                ..
+            }
+            | Shape::Sphere {
+                centre: [cx, cy, _],
+                radius,
+            } => {
+                let (dx, dy) = (cx - px, cy - py);
+                let dist = (dx * dx + dy * dy).sqrt();
+                (dist > radius + 1e-3).then(|| (dy.atan2(dx), (radius / dist).asin()))
+            }
+            Shape::Cuboid { min, max } => {
+                if s.horizontal_distance(px, py) < 1e-3 {
+                    None
+                } else {
+                    let c = ((min[1] + max[1]) / 2.0 - py).atan2((min[0] + max[0]) / 2.0 - px);
+                    let (mut lo, mut hi) = (0f64, 0f64);
+                    for (x, y) in [
+                        (min[0], min[1]),
+                        (min[0], max[1]),
+                        (max[0], min[1]),
+                        (max[0], max[1]),
+                    ] {
+                        let a = ((y - py).atan2(x - px) - c + PI).rem_euclid(TAU) - PI;
+                        lo = lo.min(a);
+                        hi = hi.max(a);
+                    }
+                    Some((c + (lo + hi) / 2.0, (hi - lo) / 2.0))
+                }
+            }
+        };
+        match span {
+            Some((c, hw)) if hw < PI - 0.1 => {
+                let width = TAU / SECTORS as f64;
+                // One sector of slack each side for rounding.
+                let first = ((c - hw) / width).floor() as i64 - 1;
+                let last = ((c + hw) / width).floor() as i64 + 1;
+                for b in first..=last {
+                    out[b.rem_euclid(SECTORS as i64) as usize].push(k);
+                }
+            }
+            _ => out.iter_mut().for_each(|v| v.push(k)),
+        }
+    }
+    for v in &mut out {
+        v.dedup();
+    }
+    out
+}

@@ -1,0 +1,240 @@
+//! Clustering and evaluation: known answers, boundaries, seeds, tree cuts.
+
+mod common;
+use placecat::cluster::hkmeans::HkMeansParams;
+use placecat::cluster::*;
+use placecat::eval::{adjusted_rand_index, confusion, evaluate, Mapping};
+use placecat::sim::{SceneKind, SimParams, Simulation};
+use placecat::{
+    delta_matrix, describe, Descriptor, DescriptorParams, DistanceMatrix, DistanceOptions,
+};
+
+fn s(v: &[&str]) -> Vec<String> {
+    v.iter().map(|x| x.to_string()).collect()
+}
+
+#[test]
+fn ari_known_values() {
+    // Identical up to relabelling.
+    assert_eq!(adjusted_rand_index(&[0, 0, 1, 1, 2], &[5, 5, 9, 9, 7]), 1.0);
+    // Recomputed by hand from the definition: a = [0,0,0,1,1,1],
+    // b = [0,0,1,1,2,2]: contingency [[2,1,0],[0,1,2]]; index = 1 + 1 = 2;
+    // rows: 3+3 = 6; cols: 1+1+1 = 3; expected = 6*3/15 = 1.2; max = 4.5;
+    // ARI = (2 - 1.2) / (4.5 - 1.2) = 0.2424...
+    let ari = adjusted_rand_index(&[0, 0, 0, 1, 1, 1], &[0, 0, 1, 1, 2, 2]);
+    assert!((ari - 0.8 / 3.3).abs() < 1e-12, "{ari}");
+    // Another: a = [0,0,1,1], b = [0,1,0,1]: index 0, rows 2, cols 2,
+    // expected 2*2/6 = 2/3, max 2: ARI = (0 - 2/3) / (2 - 2/3) = -0.5.
+    assert!((adjusted_rand_index(&[0, 0, 1, 1], &[0, 1, 0, 1]) + 0.5).abs() < 1e-12);
+    // Symmetric.
+    let (a, b) = ([0, 1, 1, 2, 2, 2, 0], [1, 1, 0, 0, 2, 2, 2]);
+    assert_eq!(adjusted_rand_index(&a, &b), adjusted_rand_index(&b, &a));
+}
+
+#[test]
+fn hungarian_mapping_on_a_hand_made_confusion() {
+    // Cluster 0 is mostly "b", cluster 1 mostly "a", cluster 2 split between
+    // "a" and "c": majority would map both 1 and 2 to "a"; Hungarian maps
+    // 2 -> "c" (one-to-one, most matches: 3 + 3 + 2 = 8).
+    let truth = s(&["a", "a", "a", "b", "b", "b", "c", "c", "a", "a"]);
+    let labels = [1, 1, 1, 0, 0, 0, 2, 2, 2, 2];
+    let c = confusion(&truth, &labels);
+    assert_eq!(c.mapping, Mapping::Hungarian);
+    assert_eq!(
+        c.cluster_class,
+        vec![
+            (0, Some("b".into())),
+            (1, Some("a".into())),
+            (2, Some("c".into()))
+        ]
+    );
+    assert_eq!(c.counts[0], vec![3, 0, 2, 0]); // a: 3 right, 2 called c
+    assert!((c.accuracy - 0.8).abs() < 1e-12);
+    assert!((c.rates[0][0] - 0.6).abs() < 1e-12);
+    // More clusters than classes: majority.
+    let c = confusion(&s(&["a", "a", "b", "b"]), &[0, 1, 2, 2]);
+    assert_eq!(c.mapping, Mapping::Majority);
+    assert_eq!(c.accuracy, 1.0);
+}
+
+#[test]
+fn dbscan_score_penalises_noise() {
+    let truth = s(&["a", "a", "b", "b"]);
+    let ev = evaluate(&truth, &[0, 0, 1, -1]).unwrap();
+    assert_eq!((ev.inliers, ev.total), (3, 4));
+    assert_eq!(ev.ari, 1.0);
+    assert!((ev.score - 0.75).abs() < 1e-12);
+    assert!((ev.accuracy - 0.75).abs() < 1e-12);
+}
+
+/// A matrix of points on a line: Delta = |x_i - x_j|.
+fn line(xs: &[f32]) -> DistanceMatrix {
+    DistanceMatrix::from_fn(xs.len(), |i, j| (xs[i] - xs[j]).abs())
+}
+
+#[test]
+fn dbscan_boundaries_exactly_epsilon_and_exactly_c() {
+    // 0, 1, 2 are 1.0 apart; 10 is alone.
+    let m = line(&[0.0, 1.0, 2.0, 10.0]);
+    // Exactly epsilon is a neighbour: scan 1 has {0,1,2} = 3 >= c = 3 (itself counted).
+    assert_eq!(
+        Dbscan::fit(&m, &DbscanParams::new(1.0, 3)).unwrap(),
+        vec![0, 0, 0, -1]
+    );
+    // Just below epsilon: nobody has a neighbour.
+    assert_eq!(
+        Dbscan::fit(&m, &DbscanParams::new(0.999, 2)).unwrap(),
+        vec![-1, -1, -1, -1]
+    );
+    // c = 4 is one more than the neighbourhood: all noise.
+    assert_eq!(
+        Dbscan::fit(&m, &DbscanParams::new(1.0, 4)).unwrap(),
+        vec![-1, -1, -1, -1]
+    );
+    // c = 1: every scan is core, the lone one its own cluster.
+    assert_eq!(
+        Dbscan::fit(&m, &DbscanParams::new(1.0, 1)).unwrap(),
+        vec![0, 0, 0, 1]
+    );
+    assert!(Dbscan::fit(&m, &DbscanParams::new(-1.0, 2))
+        .unwrap_err()
+        .to_string()
+        .contains("epsilon"));
+    assert!(Dbscan::fit(&m, &DbscanParams::new(f32::NAN, 2)).is_err());
+    assert!(Dbscan::fit(&m, &DbscanParams::new(1.0, 0))
+        .unwrap_err()
+        .to_string()
+        .contains("min_points"));
+}
+
+fn sim_set(n_per_kind: usize, seed: u64) -> (Vec<Descriptor>, Vec<String>) {
+    let mut p = SimParams::new(SceneKind::Indoor, seed);
+    p.scans = n_per_kind;
+    let sim = Simulation::new(&p).unwrap();
+    let params = DescriptorParams::indoor();
+    (0..sim.len())
+        .map(|i| {
+            let s = sim.scan(i);
+            (describe(&s.points, &params).unwrap(), s.label)
+        })
+        .unzip()
+}
+
+#[test]
+fn seeds_give_identical_results_and_parameters_are_checked() {
+    let (ds, truth) = sim_set(4, 11);
+    let opts = DistanceOptions::default();
+    let space = Space::new(&ds, opts).unwrap();
+    for seeding in [Seeding::Random, Seeding::Stride, Seeding::PlusPlus] {
+        let a = KMeans::fit(&space, &KMeansParams::new(5).seeding(seeding).seed(7)).unwrap();
+        let b = KMeans::fit(&space, &KMeansParams::new(5).seeding(seeding).seed(7)).unwrap();
+        assert_eq!(a, b, "{seeding:?}");
+        assert_eq!(a.labels.len(), truth.len());
+        assert!(a.labels.iter().all(|&l| (0..5).contains(&l)));
+    }
+    let stride = KMeans::fit(&space, &KMeansParams::new(5).seeding(Seeding::Stride)).unwrap();
+    assert_eq!(stride.seeds, vec![0, 4, 8, 12, 16]);
+    let m = delta_matrix(&ds, opts).unwrap();
+    let t1 = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(3)).unwrap();
+    let t2 = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(3)).unwrap();
+    assert_eq!(t1, t2);
+    assert!(KMeans::fit(&space, &KMeansParams::new(0))
+        .unwrap_err()
+        .to_string()
+        .contains("k must be at least 1"));
+    assert!(KMeans::fit(&space, &KMeansParams::new(21))
+        .unwrap_err()
+        .to_string()
+        .contains("more than the 20"));
+    assert!(t1.cut(f32::NAN).is_err());
+    assert!(t1.cut(-0.5).is_err());
+    assert!(t1.cut_k(0).is_err());
+}
+
+#[test]
+fn tree_heights_are_diameters_and_cuts_follow_the_threshold() {
+    let (ds, _) = sim_set(4, 12);
+    let opts = DistanceOptions::default();
+    let space = Space::new(&ds, opts).unwrap();
+    let m = delta_matrix(&ds, opts).unwrap();
+    let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(1)).unwrap();
+    assert_eq!(tree.nodes[0].members.len(), 20);
+    for node in &tree.nodes {
+        let mut diam = 0f32;
+        for &a in &node.members {
+            for &b in &node.members {
+                diam = diam.max(m.get(a, b));
+            }
+        }
+        assert_eq!(node.height, diam);
+        if let Some(p) = node.parent {
+            assert!(tree.nodes[p].height >= node.height);
+        }
+    }
+    // Every threshold: categories have diameter <= t, parents > t; counts are
+    // monotone in t.
+    let mut heights: Vec<f32> = tree.nodes.iter().map(|n| n.height).collect();
+    heights.sort_by(f32::total_cmp);
+    let mut last = usize::MAX;
+    for &t in &heights {
+        let cut = tree.cut(t).unwrap();
+        for &id in &cut.nodes {
+            assert!(tree.nodes[id].height <= t);
+            if let Some(p) = tree.nodes[id].parent {
+                assert!(tree.nodes[p].height > t);
+            }
+        }
+        assert_eq!(cut.nodes.len(), tree.count_at(t));
+        assert!(cut.labels.iter().all(|&l| l >= 0));
+        assert!(cut.nodes.len() <= last);
+        last = cut.nodes.len();
+    }
+    for k in 1..=6 {
+        assert_eq!(tree.cut_k(k).unwrap().nodes.len(), k);
+    }
+    // Linkage: n-1 rows, heights sorted, counts add up, ids refer back.
+    let z = tree.linkage();
+    assert_eq!(z.len(), 19);
+    assert!(z.windows(2).all(|w| w[0][2] <= w[1][2]));
+    assert_eq!(z[18][3], 20.0);
+    for (i, row) in z.iter().enumerate() {
+        let count = |id: f64| {
+            if id < 20.0 {
+                1.0
+            } else {
+                z[id as usize - 20][3]
+            }
+        };
+        assert!(row[0] < (20 + i) as f64 && row[1] < (20 + i) as f64);
+        assert_eq!(count(row[0]) + count(row[1]), row[3]);
+    }
+}
+
+#[test]
+fn duplicate_scans_make_a_leaf_and_still_link() {
+    let (mut ds, _) = sim_set(1, 13);
+    ds.push(ds[0].clone());
+    let opts = DistanceOptions::default();
+    let space = Space::new(&ds, opts).unwrap();
+    let m = delta_matrix(&ds, opts).unwrap();
+    let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(0)).unwrap();
+    let z = tree.linkage();
+    assert_eq!(z.len(), 5);
+    assert_eq!(z[0][2], 0.0);
+    assert_eq!(tree.cut(0.0).unwrap().nodes.len(), 5);
+}
+
+#[test]
+fn kmedoids_and_clusters_are_partitions() {
+    let (ds, truth) = sim_set(4, 14);
+    let opts = DistanceOptions::default();
+    let space = Space::new(&ds, opts).unwrap();
+    let m = delta_matrix(&ds, opts).unwrap();
+    let (labels, medoids) = KMedoids::fit(&space, &m, 5, 1, 50).unwrap();
+    assert_eq!(medoids.len(), 5);
+    for (c, &med) in medoids.iter().enumerate() {
+        assert_eq!(labels[med], c as i32);
+    }
+    let ev = evaluate(&truth, &labels).unwrap();
+    assert!(ev.accuracy > 0.4, "{}", ev.accuracy);
+}
