@@ -308,10 +308,11 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Vec<Shape> {
         let y = u(r, 30.0, 60.0) * if r.random::<bool>() { 1.0 } else { -1.0 };
         tree(&mut s, r, x, y);
     }
-    // Forest road: 7 m wide, trees from 5 m out.
-    for _ in 0..300 {
+    // Forest road: 6 m of gravel, trees from 4 m out at ~0.08 per square
+    // metre (800 a hectare, a managed conifer stand).
+    for _ in 0..480 {
         let x = u(r, 100.0, 200.0);
-        let y = u(r, 5.0, 35.0) * if r.random::<bool>() { 1.0 } else { -1.0 };
+        let y = u(r, 4.0, 35.0) * if r.random::<bool>() { 1.0 } else { -1.0 };
         tree(&mut s, r, x, y);
     }
     // Forest path: narrow, dense trees and bushes close to the track.
