@@ -7,6 +7,12 @@ cd "$(dirname "$0")/.."
 
 say() { echo "[setup] $*" >&2; }
 
+# A crate's own lockfile can pin a version the registry no longer serves;
+# then resolve afresh.
+cargo_install() {
+  cargo install --locked "$@" || cargo install "$@"
+}
+
 if ! rustup target list --installed 2>/dev/null | grep -q '^wasm32-unknown-unknown$'; then
   say "adding the wasm32-unknown-unknown target"
   rustup target add wasm32-unknown-unknown
@@ -14,7 +20,7 @@ fi
 
 if ! command -v wasm-pack >/dev/null 2>&1; then
   say "building wasm-pack from crates.io (~2 min)"
-  cargo install wasm-pack --locked
+  cargo_install wasm-pack
 fi
 
 # wasm-pack uses the wasm-bindgen on PATH when its version matches the
@@ -23,7 +29,7 @@ want=$(grep -A1 '^name = "wasm-bindgen"$' Cargo.lock | sed -n 's/^version = "\(.
 have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}' || true)
 if [ -n "$want" ] && [ "$have" != "$want" ]; then
   say "building wasm-bindgen-cli $want from crates.io (~2 min)"
-  cargo install wasm-bindgen-cli --version "$want" --locked --force
+  cargo_install wasm-bindgen-cli --version "$want" --force
 fi
 
 if ! command -v chromium >/dev/null 2>&1 || ! command -v chromedriver >/dev/null 2>&1; then

@@ -11,8 +11,9 @@ step() { echo; echo "=== $* ==="; }
 step "cargo fmt --check"
 cargo fmt --check
 
-step "cargo clippy"
+step "cargo clippy (native, and wasm32 with the wasm tests)"
 cargo clippy --all-targets --release -- -D warnings
+cargo clippy --target wasm32-unknown-unknown --no-default-features --release --lib --tests -- -D warnings
 
 step "Rust tests"
 cargo test --release

@@ -50,3 +50,19 @@ impl PointCloud {
 pub fn is_finite(p: &[f32; 3]) -> bool {
     p[0].is_finite() && p[1].is_finite() && p[2].is_finite()
 }
+
+/// At most `max` finite points, evenly strided through the scan (for maps
+/// and thumbnails), as interleaved x, y, z.
+pub fn decimate(points: &[[f32; 3]], max: usize) -> Vec<f32> {
+    let finite = points.iter().filter(|p| is_finite(p)).count();
+    if max == 0 || finite == 0 {
+        return Vec::new();
+    }
+    let step = finite.div_ceil(max);
+    points
+        .iter()
+        .filter(|p| is_finite(p))
+        .step_by(step)
+        .flat_map(|p| p.iter().copied())
+        .collect()
+}

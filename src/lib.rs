@@ -18,7 +18,10 @@ pub mod distance;
 pub mod error;
 pub mod eval;
 pub mod io;
+pub mod model;
 pub mod sim;
+#[cfg(target_arch = "wasm32")]
+pub mod wasm;
 
 pub use cloud::{Format, PointCloud};
 pub use descriptor::{describe, Descriptor, DescriptorParams};

@@ -1,0 +1,197 @@
+//! A labelled model: the user's names for categories and what is needed to
+//! classify a new scan (each category's centre in descriptor space), with
+//! the descriptor parameters it was made with. Saved and loaded as JSON.
+
+use crate::cluster::{Centre, Space};
+use crate::descriptor::{Descriptor, DescriptorParams};
+use crate::distance::{matrix_distance, size_factor, DistanceOptions, Prepared};
+use crate::error::{Error, Result};
+use serde::{Deserialize, Serialize};
+
+/// Format tag written into every model file.
+pub const MODEL_FORMAT: &str = "placecat-model/1";
+
+/// One named category.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Category {
+    pub name: String,
+    /// Cluster label this category came from.
+    pub label: i32,
+    /// Scans it was made from.
+    pub members: usize,
+    /// Normalised centre matrix (rows x cols, row-major).
+    pub centre: Vec<f32>,
+    /// Members' mean |F|.
+    pub total: f32,
+    /// Largest Delta from the centre to a member: beyond ~this, a new scan
+    /// is unlike anything the category saw.
+    pub radius: f32,
+}
+
+/// Categories with names, ready to classify new scans.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LabelledModel {
+    pub format: String,
+    pub params: DescriptorParams,
+    pub rows: usize,
+    pub cols: usize,
+    pub categories: Vec<Category>,
+}
+
+/// The answer for one scan.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Classification {
+    pub name: String,
+    pub label: i32,
+    pub distance: f32,
+    /// distance / the category's radius (> 1: farther than any member was).
+    pub relative: f32,
+}
+
+impl LabelledModel {
+    /// Build from described scans, their cluster labels (-1 ignored) and a
+    /// name per label (labels without a name are called "category N").
+    pub fn build(
+        params: &DescriptorParams,
+        descriptors: &[Descriptor],
+        labels: &[i32],
+        names: &[(i32, String)],
+    ) -> Result<LabelledModel> {
+        if descriptors.len() != labels.len() {
+            return Err(Error::Mismatch(format!(
+                "{} labels for {} descriptors",
+                labels.len(),
+                descriptors.len()
+            )));
+        }
+        let space = Space::new(descriptors, DistanceOptions::from(params))?;
+        let mut ids: Vec<i32> = labels.iter().copied().filter(|&l| l >= 0).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        if ids.is_empty() {
+            return Err(Error::InvalidParameter(
+                "no labelled scans to build a model from".into(),
+            ));
+        }
+        let mut categories = Vec::new();
+        for id in ids {
+            let members: Vec<usize> = (0..labels.len()).filter(|&i| labels[i] == id).collect();
+            // Start at the first member, then refine twice so each member
+            // contributes its candidate nearest to the mean.
+            let mut centre = space.centre_of(members[0]);
+            for _ in 0..3 {
+                centre = space.mean(&members, &centre).expect("members is not empty");
+            }
+            let radius = members
+                .iter()
+                .map(|&i| space.to_centre(&centre, i).0)
+                .fold(0f32, f32::max);
+            let name = names
+                .iter()
+                .find(|(l, _)| *l == id)
+                .map(|(_, n)| n.clone())
+                .unwrap_or_else(|| format!("category {id}"));
+            categories.push(Category {
+                name,
+                label: id,
+                members: members.len(),
+                centre: centre.matrix,
+                total: centre.total,
+                radius,
+            });
+        }
+        let first = &space.items[0];
+        Ok(LabelledModel {
+            format: MODEL_FORMAT.into(),
+            params: params.clone(),
+            rows: first.rows,
+            cols: first.cols,
+            categories,
+        })
+    }
+
+    /// Parse and check a model file.
+    pub fn from_json(text: &str) -> Result<LabelledModel> {
+        let m: LabelledModel = serde_json::from_str(text)?;
+        if m.format != MODEL_FORMAT {
+            return Err(Error::Mismatch(format!(
+                "not a placecat model (format {:?}, expected {MODEL_FORMAT:?})",
+                m.format
+            )));
+        }
+        m.params.validate()?;
+        if m.rows != m.params.rows() || m.cols != m.params.cols() {
+            return Err(Error::Mismatch(
+                "the model's matrix shape does not match its parameters".into(),
+            ));
+        }
+        if m.categories.is_empty() {
+            return Err(Error::Mismatch("the model has no categories".into()));
+        }
+        for c in &m.categories {
+            if c.centre.len() != m.rows * m.cols
+                || !c.centre.iter().all(|v| v.is_finite())
+                || c.total.is_nan()
+                || c.total <= 0.0
+            {
+                return Err(Error::Mismatch(format!(
+                    "category {:?} has a malformed centre",
+                    c.name
+                )));
+            }
+        }
+        Ok(m)
+    }
+
+    pub fn to_json(&self) -> Result<String> {
+        Ok(serde_json::to_string(self)?)
+    }
+
+    /// Rename categories: (label, new name) pairs.
+    pub fn rename(&mut self, names: &[(i32, String)]) {
+        for c in &mut self.categories {
+            if let Some((_, n)) = names.iter().find(|(l, _)| *l == c.label) {
+                c.name = n.clone();
+            }
+        }
+    }
+
+    /// The nearest category of a described scan.
+    pub fn classify(&self, d: &Descriptor) -> Result<Classification> {
+        if d.rows != self.rows || d.cols != self.cols {
+            return Err(Error::Mismatch(format!(
+                "the scan was described with other parameters ({}x{}) than the model's ({}x{})",
+                d.rows, d.cols, self.rows, self.cols
+            )));
+        }
+        let p = Prepared::new(d, DistanceOptions::from(&self.params))?;
+        let mut best: Option<Classification> = None;
+        for c in &self.categories {
+            let centre = Centre {
+                matrix: c.centre.clone(),
+                total: c.total,
+            };
+            let dist = p
+                .matrices
+                .iter()
+                .map(|m| {
+                    matrix_distance(&centre.matrix, m, self.rows, self.cols, self.params.metric)
+                })
+                .fold(f32::INFINITY, f32::min)
+                * size_factor(c.total, p.total);
+            if best.as_ref().is_none_or(|b| dist < b.distance) {
+                best = Some(Classification {
+                    name: c.name.clone(),
+                    label: c.label,
+                    distance: dist,
+                    relative: if c.radius > 0.0 {
+                        dist / c.radius
+                    } else {
+                        f32::INFINITY
+                    },
+                });
+            }
+        }
+        Ok(best.expect("a model has categories"))
+    }
+}

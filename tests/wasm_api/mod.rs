@@ -1,0 +1,165 @@
+//! The JS API end to end, run by `wasm-pack test` in headless Chromium
+//! (tests/web.rs) and in Node (tests/node.rs).
+
+use placecat::wasm::*;
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use wasm_bindgen_test::*;
+
+include!("../parity_case.rs");
+
+fn message(e: JsError) -> String {
+    let v: JsValue = e.into();
+    let err: js_sys::Error = v.dyn_into().expect("a JS Error");
+    err.message().into()
+}
+
+fn get(v: &JsValue, key: &str) -> JsValue {
+    js_sys::Reflect::get(v, &key.into()).unwrap()
+}
+
+fn labels_of(v: &JsValue) -> Vec<i32> {
+    serde_wasm_bindgen::from_value(get(v, "labels")).unwrap()
+}
+
+#[wasm_bindgen_test]
+fn core_labels_match_the_native_fixture() {
+    let want: serde_json::Value =
+        serde_json::from_str(include_str!("../fixtures/parity.json")).unwrap();
+    assert_eq!(parity_case(), want);
+}
+
+fn real_set() -> (DescriptorSet, Vec<DescribedScan>) {
+    let mut set = DescriptorSet::new(JsValue::UNDEFINED, Some("indoor".into())).unwrap();
+    let mut scans = Vec::new();
+    for (name, bytes) in PARITY_FILES {
+        let s = describe_scan(
+            bytes,
+            name,
+            JsValue::UNDEFINED,
+            Some("indoor".into()),
+            Some(2000),
+        )
+        .unwrap();
+        set.add(&s).unwrap();
+        scans.push(s);
+    }
+    (set, scans)
+}
+
+#[wasm_bindgen_test]
+fn describe_real_bytes_and_cluster_through_the_api() {
+    let (mut set, scans) = real_set();
+    assert_eq!(set.length(), 6);
+    assert_eq!(scans[3].format(), "pcd_binary_compressed");
+    let summary = scans[3].summary().unwrap();
+    assert_eq!(get(&summary, "points").as_f64(), Some(112586.0));
+    assert!(get(&summary, "planar").as_f64().unwrap() > 100.0);
+    let preview = scans[3].preview();
+    assert!(
+        preview.length() <= 3 * 2000 && preview.length() > 3 * 1500,
+        "{}",
+        preview.length()
+    );
+    let m = set.delta_matrix().unwrap().to_vec();
+    assert_eq!(m.len(), 36);
+    for i in 0..6 {
+        assert_eq!(m[i * 6 + i], 0.0);
+        for j in 0..6 {
+            assert_eq!(m[i * 6 + j], m[j * 6 + i]);
+        }
+    }
+    // The two room scans are nearer each other than to the ouster scans.
+    assert!(m[3 * 6 + 4] < m[3 * 6]);
+    // Same labels as the core computes on the same bytes.
+    let km = set.kmeans(3, "stride", 1).unwrap();
+    let labels = labels_of(&km);
+    assert_eq!(labels[0], labels[1]);
+    assert_eq!(labels[3], labels[4]);
+    let tree = set.hkmeans(2).unwrap();
+    let linkage = tree.linkage().to_vec();
+    assert_eq!(linkage.len(), 5 * 4);
+    let cut = tree.cut_k(3).unwrap();
+    assert_eq!(labels_of(&cut).len(), 6);
+    assert_eq!(tree.count_at(tree.root_height()), 1);
+    let db = set.dbscan(0.5, 2).unwrap().to_vec();
+    assert_eq!(db.len(), 6);
+}
+
+#[wasm_bindgen_test]
+fn simulated_demo_model_round_trip_and_classify() {
+    let sim = Simulator::new("indoor", 4, Some(2)).unwrap();
+    assert_eq!(sim.length(), 10);
+    let mut set = DescriptorSet::new(JsValue::UNDEFINED, None).unwrap();
+    let mut truth = Vec::new();
+    let mut scans = Vec::new();
+    for i in 0..sim.length() {
+        let s = sim.scan(i).unwrap();
+        let bytes: Vec<u8> = js_sys::Uint8Array::new(&get(&s, "bytes")).to_vec();
+        let name = get(&s, "name").as_string().unwrap();
+        truth.push(get(&s, "label").as_string().unwrap());
+        let d = describe_scan(&bytes, &name, JsValue::UNDEFINED, None, None).unwrap();
+        set.add_json(&d.descriptor_json().unwrap()).unwrap();
+        scans.push(d);
+    }
+    let km = set.kmeans(5, "plusplus", 1).unwrap();
+    let labels = labels_of(&km);
+    let ev = DescriptorSet::evaluate(truth.clone(), &labels).unwrap();
+    let acc = get(&ev, "accuracy").as_f64().unwrap();
+    assert!((0.0..=1.0).contains(&acc));
+    let names = js_sys::JSON::parse(r#"{"0": "first", "1": "second"}"#).unwrap();
+    let model = set.build_model(&labels, names).unwrap();
+    let json = model.to_json().unwrap();
+    let again = Model::from_json(&json).unwrap();
+    assert_eq!(again.to_json().unwrap(), json);
+    // A scan of the set is classified into its own cluster, at distance <= radius.
+    let c = again.classify(&scans[0]).unwrap();
+    assert_eq!(get(&c, "label").as_f64(), Some(labels[0] as f64));
+    assert!(get(&c, "relative").as_f64().unwrap() <= 1.0 + 1e-6);
+    let cats = again.categories().unwrap();
+    assert_eq!(js_sys::Array::from(&cats).length(), 5);
+    let poses = parse_poses(
+        "0 0 0 1 0 0 0 1\n1 2 0 1 0 0 0.7071068 0.7071068\n",
+        Some("p.txt".into()),
+    )
+    .unwrap();
+    assert_eq!(get(&poses, "format").as_string().as_deref(), Some("tum"));
+}
+
+#[wasm_bindgen_test]
+fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable() {
+    let e = message(
+        describe_scan(
+            b"ply\nformat ascii 1.0\nelement vertex 3\n",
+            "bad.ply",
+            JsValue::UNDEFINED,
+            None,
+            None,
+        )
+        .err()
+        .unwrap(),
+    );
+    assert!(e.contains("bad.ply") && e.contains("end_header"), "{e}");
+    let e = message(
+        describe_scan(&[1, 2, 3], "odd.bin", JsValue::UNDEFINED, None, None)
+            .err()
+            .unwrap(),
+    );
+    assert!(e.contains("odd.bin") && e.contains("16-byte"), "{e}");
+    let e = message(preset_params("attic").err().unwrap());
+    assert!(e.contains("attic"), "{e}");
+    let bad = js_sys::JSON::parse(r#"{"voxel_size": -2}"#).unwrap();
+    let e = message(validate_params(bad, None).err().unwrap());
+    assert!(e.contains("voxel_size"), "{e}");
+    let typo = js_sys::JSON::parse(r#"{"voxel_sise": 2}"#).unwrap();
+    assert!(message(validate_params(typo, None).err().unwrap()).contains("voxel_sise"));
+    let (mut set, _) = real_set();
+    let e = message(set.kmeans(0, "stride", 0).err().unwrap());
+    assert!(e.contains("k must be at least 1"), "{e}");
+    assert!(message(set.kmeans(2, "sideways", 0).err().unwrap()).contains("sideways"));
+    assert!(message(set.dbscan(-1.0, 2).err().unwrap()).contains("epsilon"));
+    assert!(message(Model::from_json("{\"format\": 1}").err().unwrap()).starts_with("model:"));
+    assert!(message(Simulator::new("moon", 0, None).err().unwrap()).contains("moon"));
+    // Still usable after the errors.
+    assert_eq!(labels_of(&set.kmeans(2, "stride", 0).unwrap()).len(), 6);
+}
