@@ -1,0 +1,54 @@
+// Shared e2e set-up: serve www/ on a free loopback port, start Debian's
+// chromium through playwright-core, record console errors and requests.
+import { chromium } from 'playwright-core';
+import { mkdirSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { serve } from '../../scripts/serve.mjs';
+
+export const ROOT = resolve(new URL('../..', import.meta.url).pathname);
+export const REAL = resolve(ROOT, '../shared/data/real');
+export const ARTIFACTS = join(ROOT, 'test-artifacts');
+mkdirSync(ARTIFACTS, { recursive: true });
+
+export async function start() {
+  const server = await serve(join(ROOT, 'www'), 0);
+  const url = `http://127.0.0.1:${server.address().port}/`;
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  });
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 1000 } });
+  const page = await context.newPage();
+  const problems = [];
+  const requests = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  context.on('request', (r) => requests.push(r.url()));
+  await page.goto(url);
+  await page.waitForFunction(() => document.body.dataset.ready === 'true', null, { timeout: 60000 });
+  return {
+    url, page, context, problems, requests,
+    async close() {
+      await browser.close();
+      server.close();
+    },
+  };
+}
+
+/** Count canvas pixels that are not transparent or white. */
+export function inkedPixels(page, id) {
+  return page.evaluate((id) => {
+    const c = document.getElementById(id);
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && !(d[i] > 245 && d[i + 1] > 245 && d[i + 2] > 245)) n++;
+    return n;
+  }, id);
+}
+
+/** Do `action`, then wait until the page has finished one more run. */
+export async function afterRun(page, action, timeout = 120000) {
+  const runs = await page.evaluate(() => Number(document.body.dataset.runs || 0));
+  await action();
+  await page.waitForFunction((n) => Number(document.body.dataset.runs || 0) > n, runs, { timeout });
+}

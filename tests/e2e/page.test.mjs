@@ -1,0 +1,131 @@
+// End-to-end tests of the page in Debian's chromium (playwright-core).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { start, inkedPixels, afterRun, ARTIFACTS, REAL } from './harness.mjs';
+
+const groups = readFileSync(join(REAL, 'groups.csv'), 'utf8').trim().split('\n').slice(1).map((l) => l.split(',')[0]);
+const tmp = mkdtempSync(join(tmpdir(), 'placecat-e2e-'));
+const bad = join(tmp, 'broken.ply');
+writeFileSync(bad, 'ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\nproperty float y\nproperty float z\nend_header\n\x00\x00');
+const realFiles = groups.map((f) => join(REAL, f));
+
+let h;
+before(async () => { h = await start(); });
+after(async () => { await h?.close(); });
+
+const categories = () => h.page.$eval('#cluster-status', (e) => Number(e.dataset.categories));
+
+async function loadReal() {
+  await afterRun(h.page, () => h.page.setInputFiles('#files', [...realFiles, bad]));
+}
+
+test('real scans through the file input: progress, dendrogram, map, a bad file skipped', async () => {
+  await loadReal();
+  const text = await h.page.textContent('#progress-text');
+  assert.match(text, /^19 \/ 19 scans/);
+  assert.match(await h.page.textContent('#cluster-status'), /from 18 scans/);
+  const errors = await h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent));
+  assert.equal(errors.length, 1);
+  assert.match(errors[0], /broken\.ply.*truncated/);
+  assert.ok((await inkedPixels(h.page, 'dendrogram')) > 2000, 'dendrogram drawn');
+  assert.ok((await inkedPixels(h.page, 'map')) > 500, 'strip drawn');
+  await h.page.screenshot({ path: join(ARTIFACTS, 'real-files.png') });
+});
+
+test('dragging the threshold changes the number of categories', async () => {
+  const before = await categories();
+  const box = await h.page.locator('#dendrogram').boundingBox();
+  // Near the bottom of the plot: a low threshold, many categories.
+  await h.page.mouse.move(box.x + box.width / 2, box.y + box.height * 0.78);
+  await h.page.mouse.down();
+  await h.page.mouse.move(box.x + box.width / 2, box.y + box.height * 0.8, { steps: 3 });
+  await h.page.mouse.up();
+  const low = await categories();
+  assert.ok(low > before, `${low} categories after dragging down from ${before}`);
+  // Near the top: one category.
+  await h.page.mouse.move(box.x + box.width / 2, box.y + 6);
+  await h.page.mouse.down();
+  await h.page.mouse.up();
+  assert.equal(await categories(), 1);
+  // And the numeric field.
+  await h.page.fill('#threshold', '0.3');
+  await h.page.press('#threshold', 'Enter');
+  assert.ok((await categories()) > 1);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'threshold-dragged.png') });
+});
+
+test('a name survives a reload and appears in the exported CSV', async () => {
+  const input = h.page.locator('#legend input').first();
+  await input.fill('loading dock');
+  const size = Number((await h.page.locator('#legend .size').first().textContent()).split(' ')[0]);
+  await h.page.reload();
+  await h.page.waitForFunction(() => document.body.dataset.ready === 'true');
+  await loadReal();
+  await h.page.fill('#threshold', '0.3');
+  await h.page.press('#threshold', 'Enter');
+  const names = await h.page.$$eval('#legend input', (xs) => xs.map((x) => x.value));
+  assert.ok(names.includes('loading dock'), `names after reload: ${names}`);
+  const [download] = await Promise.all([h.page.waitForEvent('download'), h.page.click('#export-csv')]);
+  const csv = readFileSync(await download.path(), 'utf8').trim().split('\n');
+  assert.equal(csv[0], 'file,category');
+  assert.equal(csv.length, 19);
+  const rows = csv.slice(1).map((r) => r.split(','));
+  assert.deepEqual(rows.map((r) => r[0]).sort(), groups.map((g) => g.split('/')[1]).sort());
+  assert.equal(rows.filter((r) => r[1] === 'loading dock').length, size);
+});
+
+test('the model exports, a malformed one is rejected, a good one loads', async () => {
+  const [download] = await Promise.all([h.page.waitForEvent('download'), h.page.click('#export-model')]);
+  const model = JSON.parse(readFileSync(await download.path(), 'utf8'));
+  assert.equal(model.format, 'placecat-model/1');
+  assert.ok(model.categories.some((c) => c.name === 'loading dock'));
+  const before = await h.page.$$eval('#legend input', (xs) => xs.map((x) => x.value));
+  const broken = join(tmp, 'broken-model.json');
+  writeFileSync(broken, '{"format": "placecat-model/1", "categories": 3}');
+  await h.page.setInputFiles('#import', broken);
+  await h.page.waitForFunction(() => /Rejected/.test(document.getElementById('import-status').textContent));
+  assert.deepEqual(await h.page.$$eval('#legend input', (xs) => xs.map((x) => x.value)), before);
+  assert.equal(await h.page.$eval('#classify', (e) => e.disabled), true);
+  const good = join(tmp, 'model.json');
+  writeFileSync(good, JSON.stringify(model));
+  await h.page.setInputFiles('#import', good);
+  await h.page.waitForFunction(() => /Model loaded/.test(document.getElementById('import-status').textContent));
+  await h.page.setInputFiles('#classify', [join(REAL, 'pcl_room/room_scan1.pcd')]);
+  await h.page.waitForFunction(() => /room_scan1\.pcd →/.test(document.getElementById('classified').textContent));
+});
+
+test('KITTI scans with a poses file draw a trajectory map', async () => {
+  const dir = join(REAL, 'kitti00');
+  await afterRun(h.page, () => h.page.setInputFiles('#files', ['000094.bin', '000095.bin', '000198.bin', '000199.bin', 'poses.txt'].map((f) => join(dir, f))));
+  assert.match(await h.page.textContent('#map-caption'), /Trajectory map/);
+  assert.ok((await inkedPixels(h.page, 'map')) > 2000);
+  // Click the first scan on the map (leftmost-bottom of the fitted path): its name shows.
+  const box = await h.page.locator('#map').boundingBox();
+  const hit = await h.page.evaluate(() => {
+    const c = document.getElementById('map');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    // A fully opaque category-coloured pixel (the scan markers).
+    for (let i = 0; i < d.length; i += 4) if (d[i + 3] === 255 && d[i] === 0x4e && d[i + 1] === 0x79) return [(i / 4) % c.width, Math.floor(i / 4 / c.width), c.width, c.height];
+    return null;
+  });
+  assert.ok(hit, 'a scan marker in the first category colour');
+  await h.page.mouse.click(box.x + ((hit[0] + 2) / hit[2]) * box.width, box.y + ((hit[1] + 2) / hit[3]) * box.height);
+  assert.match(await h.page.textContent('#info'), /0001?9[459]\.bin: /);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'kitti-map.png') });
+});
+
+test('the demo runs with no files and shows accuracy against its ground truth', async () => {
+  await afterRun(h.page, () => h.page.click('#demo-indoor'));
+  assert.match(await h.page.textContent('#cluster-status'), /from 40 scans/);
+  assert.match(await h.page.textContent('#accuracy'), /accuracy \d+\.\d %/);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'demo-indoor.png') });
+});
+
+test('no console errors and no requests beyond the page origin', async () => {
+  assert.deepEqual(h.problems, []);
+  const foreign = h.requests.filter((u) => !u.startsWith(h.url) && !u.startsWith('blob:') && !u.startsWith('data:'));
+  assert.deepEqual(foreign, []);
+});

@@ -1,0 +1,189 @@
+// The dendrogram (paper Fig. 1b, 2): node heights are diameters; a red
+// threshold line the user drags; categories coloured at the cut, with a
+// thumbnail of each category's most central scan beneath its leaves.
+import { colour, drawThumbnail } from './colours.js';
+
+const M = { left: 46, right: 12, top: 14, bottom: 64 };
+
+export class Dendrogram {
+  constructor(canvas, { onThreshold, onHover }) {
+    this.canvas = canvas;
+    this.ctx = canvas.getContext('2d');
+    this.onThreshold = onThreshold;
+    this.onHover = onHover;
+    this.data = null;
+    this.highlight = -1;
+    let dragging = false;
+    const heightAt = (e) => {
+      const r = canvas.getBoundingClientRect();
+      const y = ((e.clientY - r.top) / r.height) * canvas.height;
+      return this.#heightOf(y);
+    };
+    canvas.addEventListener('pointerdown', (e) => {
+      if (!this.data) return;
+      dragging = true;
+      canvas.setPointerCapture(e.pointerId);
+      this.onThreshold(heightAt(e));
+    });
+    canvas.addEventListener('pointermove', (e) => {
+      if (!this.data) return;
+      if (dragging) this.onThreshold(heightAt(e));
+      this.onHover(this.#categoryAt(e), e);
+    });
+    canvas.addEventListener('pointerup', () => (dragging = false));
+    canvas.addEventListener('pointerleave', () => this.onHover(-1));
+    canvas.addEventListener('keydown', (e) => {
+      if (!this.data || !['ArrowUp', 'ArrowDown'].includes(e.key)) return;
+      e.preventDefault();
+      const step = this.data.rootHeight / 50;
+      this.onThreshold(Math.max(0, this.data.threshold + (e.key === 'ArrowUp' ? step : -step)));
+    });
+  }
+
+  get plotHeight() {
+    return this.canvas.height - M.top - M.bottom;
+  }
+  #y(h) {
+    return M.top + (1 - h / this.data.top) * this.plotHeight;
+  }
+  #heightOf(y) {
+    const h = (1 - (y - M.top) / this.plotHeight) * this.data.top;
+    return Math.min(this.data.top, Math.max(0, h));
+  }
+  #categoryAt(e) {
+    const r = this.canvas.getBoundingClientRect();
+    const x = ((e.clientX - r.left) / r.width) * this.canvas.width;
+    return this.data.spans.findIndex(([a, b]) => x >= a - this.data.step / 2 && x <= b + this.data.step / 2);
+  }
+
+  /**
+   * nodes: the tree's nodes; cutNodes: the tree node of each category;
+   * central: per category, the preview points of its most central scan.
+   */
+  set({ nodes, rootHeight, threshold, cutNodes, central, names }) {
+    const leaves = [];
+    const stack = [0];
+    while (stack.length) {
+      const id = stack.pop();
+      if (nodes[id].children.length === 0) leaves.push(id);
+      else for (let i = nodes[id].children.length - 1; i >= 0; i--) stack.push(nodes[id].children[i]);
+    }
+    const width = this.canvas.width - M.left - M.right;
+    const step = width / Math.max(1, leaves.length);
+    const x = new Float64Array(nodes.length);
+    leaves.forEach((id, i) => (x[id] = M.left + (i + 0.5) * step));
+    // Internal nodes: the middle of their children (post-order).
+    const order = [];
+    const st = [[0, false]];
+    while (st.length) {
+      const [id, done] = st.pop();
+      if (done || nodes[id].children.length === 0) order.push(id);
+      else {
+        st.push([id, true]);
+        for (const c of nodes[id].children) st.push([c, false]);
+      }
+    }
+    for (const id of order) {
+      const ch = nodes[id].children;
+      if (ch.length) x[id] = ch.reduce((s, c) => s + x[c], 0) / ch.length;
+    }
+    // Category of each node at the cut (-1 above the cut).
+    const cat = new Int32Array(nodes.length).fill(-1);
+    const spans = [];
+    cutNodes.forEach((root, c) => {
+      const s = [root];
+      let lo = Infinity, hi = -Infinity;
+      while (s.length) {
+        const id = s.pop();
+        cat[id] = c;
+        if (nodes[id].children.length === 0) {
+          lo = Math.min(lo, x[id]);
+          hi = Math.max(hi, x[id]);
+        }
+        s.push(...nodes[id].children);
+      }
+      spans.push([lo, hi]);
+    });
+    this.data = { nodes, x, cat, spans, step, rootHeight, threshold, top: Math.max(rootHeight * 1.05, 1e-6), central, names, cutNodes };
+    this.draw();
+  }
+
+  setHighlight(c) {
+    this.highlight = c;
+    this.draw();
+  }
+
+  draw() {
+    const { ctx, canvas } = this;
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    if (!this.data) {
+      ctx.fillStyle = '#5b6575';
+      ctx.font = '14px system-ui';
+      ctx.fillText('Load scans or try the demo; the dendrogram of hierarchical k-means++ appears here.', 20, 40);
+      return;
+    }
+    const { nodes, x, cat, spans, threshold, top, central } = this.data;
+    // Axis.
+    ctx.strokeStyle = '#c5ccd6';
+    ctx.fillStyle = '#5b6575';
+    ctx.font = '11px system-ui';
+    ctx.beginPath();
+    ctx.moveTo(M.left - 6, M.top);
+    ctx.lineTo(M.left - 6, M.top + this.plotHeight);
+    ctx.stroke();
+    for (let i = 0; i <= 4; i++) {
+      const h = (top * i) / 4;
+      ctx.fillText(h.toFixed(2), 2, this.#y(h) + 4);
+    }
+    // Links.
+    ctx.lineWidth = 1.2;
+    nodes.forEach((n, id) => {
+      if (!n.children.length) return;
+      const y = this.#y(n.height);
+      for (const c of n.children) {
+        ctx.strokeStyle = cat[c] >= 0 ? colour(cat[c]) : '#6b7280';
+        if (cat[c] >= 0 && this.highlight >= 0 && cat[c] !== this.highlight) ctx.strokeStyle = '#d5d9df';
+        ctx.beginPath();
+        ctx.moveTo(x[c], this.#y(nodes[c].height));
+        ctx.lineTo(x[c], y);
+        ctx.lineTo(x[id], y);
+        ctx.stroke();
+      }
+    });
+    // Leaves: a tick per leaf in its category colour.
+    nodes.forEach((n, id) => {
+      if (n.children.length) return;
+      ctx.fillStyle = colour(cat[id]);
+      ctx.fillRect(x[id] - 1, M.top + this.plotHeight, 2, 6);
+    });
+    // Threshold line with a handle.
+    const ty = this.#y(threshold);
+    ctx.strokeStyle = '#e0302b';
+    ctx.lineWidth = 2;
+    ctx.setLineDash([6, 4]);
+    ctx.beginPath();
+    ctx.moveTo(M.left - 6, ty);
+    ctx.lineTo(this.canvas.width - M.right, ty);
+    ctx.stroke();
+    ctx.setLineDash([]);
+    ctx.fillStyle = '#e0302b';
+    ctx.fillRect(this.canvas.width - M.right - 10, ty - 5, 10, 10);
+    ctx.fillText(`t = ${threshold.toFixed(3)}  (${spans.length} categories)`, M.left, Math.max(12, ty - 6));
+    // Thumbnails of each category's most central scan, if there is room.
+    const room = Math.min(48, ...spans.map(([a, b], i) => (i + 1 < spans.length ? spans[i + 1][0] - a : 1e9)));
+    if (room >= 20 && central) {
+      const size = Math.floor(Math.min(48, room - 2));
+      const tmp = document.createElement('canvas');
+      tmp.width = tmp.height = size;
+      spans.forEach(([a, b], c) => {
+        drawThumbnail(tmp, central[c], colour(c));
+        const cx = (a + b) / 2 - size / 2;
+        const cy = this.canvas.height - M.bottom + 10;
+        ctx.strokeStyle = colour(c);
+        ctx.lineWidth = c === this.highlight ? 3 : 1;
+        ctx.strokeRect(cx - 0.5, cy - 0.5, size + 1, size + 1);
+        ctx.drawImage(tmp, cx, cy);
+      });
+    }
+  }
+}

@@ -1,0 +1,36 @@
+// Collecting files from inputs and drag-and-drop (folders included).
+
+export const isScan = (name) => /\.(ply|pcd|bin)$/i.test(name);
+export const isTruth = (name) => /(^|\/)labels\.csv$/i.test(name);
+export const isPoses = (name) => /poses[^/]*\.(txt|csv)$/i.test(name) || /(^|\/)(trajectory|groundtruth)[^/]*\.(txt|csv)$/i.test(name);
+
+/** Every File under a drop, walking directories (readEntries gives at most 100 a call). */
+export async function filesFromDrop(dataTransfer) {
+  const entries = [...dataTransfer.items].map((it) => it.webkitGetAsEntry?.()).filter(Boolean);
+  if (entries.length === 0) return [...dataTransfer.files];
+  const out = [];
+  const walk = async (entry, path) => {
+    if (entry.isFile) {
+      const file = await new Promise((res, rej) => entry.file(res, rej));
+      out.push({ file, name: path + file.name });
+    } else if (entry.isDirectory) {
+      const reader = entry.createReader();
+      for (;;) {
+        const batch = await new Promise((res, rej) => reader.readEntries(res, rej));
+        if (batch.length === 0) break;
+        for (const e of batch) await walk(e, `${path}${entry.name}/`);
+      }
+    }
+  };
+  for (const e of entries) await walk(e, '');
+  return out;
+}
+
+/** Normalise a FileList (from an input) to [{file, name}]. */
+export function filesFromInput(list) {
+  return [...list].map((file) => ({ file, name: file.webkitRelativePath || file.name }));
+}
+
+export function baseName(name) {
+  return name.split('/').pop();
+}

@@ -1,0 +1,69 @@
+// A pool of module workers, one per core, each with its own wasm instance.
+// Tasks queue; each worker takes one at a time. A worker that dies (an
+// uncaught error, out of memory) fails only its task and is replaced.
+
+export class WorkerPool {
+  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2)) {
+    this.url = url;
+    this.size = size;
+    this.queue = [];
+    this.slots = [];
+    this.nextId = 1;
+    for (let i = 0; i < size; i++) this.slots.push(this.#spawn());
+  }
+
+  #spawn() {
+    const worker = new Worker(this.url, { type: 'module' });
+    const slot = { worker, job: null };
+    worker.onmessage = (e) => {
+      const job = slot.job;
+      if (!job || e.data.id !== job.id) return;
+      slot.job = null;
+      if (e.data.ok) job.resolve(e.data.result);
+      else job.reject(new Error(e.data.error));
+      this.#pump();
+    };
+    const die = (e) => {
+      e?.preventDefault?.();
+      const job = slot.job;
+      slot.job = null;
+      worker.terminate();
+      const i = this.slots.indexOf(slot);
+      if (i >= 0) this.slots[i] = this.#spawn();
+      job?.reject(new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`));
+      this.#pump();
+    };
+    worker.onerror = die;
+    worker.onmessageerror = die;
+    return slot;
+  }
+
+  #pump() {
+    for (const slot of this.slots) {
+      if (slot.job || this.queue.length === 0) continue;
+      const job = this.queue.shift();
+      slot.job = job;
+      slot.worker.postMessage({ id: job.id, task: job.task });
+    }
+  }
+
+  /** Run a task on the next free worker. */
+  run(task) {
+    return new Promise((resolve, reject) => {
+      this.queue.push({ id: this.nextId++, task, resolve, reject });
+      this.#pump();
+    });
+  }
+
+  /** Drop queued tasks and stop running ones (their promises reject). */
+  cancel() {
+    const cancelled = new Error('cancelled');
+    for (const job of this.queue.splice(0)) job.reject(cancelled);
+    this.slots = this.slots.map((slot) => {
+      if (!slot.job) return slot;
+      slot.worker.terminate();
+      slot.job.reject(cancelled);
+      return this.#spawn();
+    });
+  }
+}
