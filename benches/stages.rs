@@ -1,0 +1,215 @@
+//! Per-stage benchmarks (criterion), with peers measured in the same run:
+//! ply-rs for PLY reading, and a fixed-stride copy of x, y, z (the memory
+//! floor). `cargo bench --bench stages`; `node scripts/bench-table.mjs`
+//! turns the results into docs/benchmarks.md.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use placecat::cluster::hkmeans::HkMeansParams;
+use placecat::cluster::*;
+use placecat::descriptor::{alignment, histogram, ndt_grid, shape};
+use placecat::io::write::{self, PlyEncoding};
+use placecat::io::{read_scan, ReadLimits};
+use placecat::sim::{LidarParams, SceneKind, SimParams, Simulation};
+use placecat::*;
+use std::time::Duration;
+
+const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/real");
+
+/// A simulated outdoor scan of about `rays` rays.
+fn sim_scan(beams: usize, azimuth: usize) -> Vec<[f32; 3]> {
+    let mut p = SimParams::new(SceneKind::Outdoor, 1);
+    p.scans = 3;
+    p.lidar = Some(LidarParams {
+        beams,
+        azimuth_steps: azimuth,
+        dropout: 0.0,
+        ..LidarParams::outdoor()
+    });
+    Simulation::new(&p).unwrap().scan(1).points
+}
+
+/// The memory floor: copy x, y, z out of fixed-stride float32 records.
+fn stride_copy(body: &[u8], stride: usize) -> Vec<[f32; 3]> {
+    body.chunks_exact(stride)
+        .map(|r| {
+            let f = |o: usize| f32::from_le_bytes([r[o], r[o + 1], r[o + 2], r[o + 3]]);
+            [f(0), f(4), f(8)]
+        })
+        .collect()
+}
+
+fn ply_rs_read(bytes: &[u8]) -> usize {
+    let parser = ply_rs::parser::Parser::<ply_rs::ply::DefaultElement>::new();
+    let mut r = std::io::Cursor::new(bytes);
+    let ply = parser.read_ply(&mut r).unwrap();
+    ply.payload["vertex"].len()
+}
+
+fn config() -> Criterion {
+    Criterion::default()
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(3))
+        .warm_up_time(Duration::from_millis(500))
+}
+
+fn read(c: &mut Criterion) {
+    let limits = ReadLimits::default();
+    let mut g = c.benchmark_group("read");
+    for (label, pts) in [("100k", sim_scan(64, 1800)), ("1M", sim_scan(128, 8192))] {
+        let n = pts.len() as u64;
+        let bin = write::ply(&pts, PlyEncoding::BinaryLittleEndian, false);
+        let ascii = write::ply(&pts, PlyEncoding::Ascii, false);
+        let header = bin.len() - pts.len() * 12;
+        g.throughput(Throughput::Elements(n));
+        g.bench_with_input(
+            BenchmarkId::new("ply_binary/placecat", label),
+            &bin,
+            |b, x| b.iter(|| read_scan(x, "a.ply", &limits).unwrap().points.len()),
+        );
+        g.bench_with_input(
+            BenchmarkId::new("ply_binary/ply-rs", label),
+            &bin,
+            |b, x| b.iter(|| ply_rs_read(x)),
+        );
+        g.bench_with_input(
+            BenchmarkId::new("ply_binary/stride_copy_floor", label),
+            &bin,
+            |b, x| b.iter(|| stride_copy(&x[header..], 12).len()),
+        );
+        g.bench_with_input(
+            BenchmarkId::new("ply_ascii/placecat", label),
+            &ascii,
+            |b, x| b.iter(|| read_scan(x, "a.ply", &limits).unwrap().points.len()),
+        );
+        if label == "100k" {
+            g.bench_with_input(
+                BenchmarkId::new("ply_ascii/ply-rs", label),
+                &ascii,
+                |b, x| b.iter(|| ply_rs_read(x)),
+            );
+        }
+    }
+    for (label, rel) in [
+        ("kitti_bin/real_000094", "kitti00/000094.bin"),
+        (
+            "pcd_binary_compressed/real_room_scan1",
+            "pcl_room/room_scan1.pcd",
+        ),
+        ("pcd_binary/real_velodyne", "velodyne_pair/251370668.pcd"),
+    ] {
+        let bytes = std::fs::read(format!("{REAL}/{rel}")).unwrap();
+        let n = read_scan(&bytes, rel, &limits).unwrap().points.len() as u64;
+        g.throughput(Throughput::Elements(n));
+        g.bench_with_input(BenchmarkId::new(label, n), &bytes, |b, x| {
+            b.iter(|| read_scan(x, rel, &limits).unwrap().points.len())
+        });
+    }
+    g.finish();
+}
+
+fn describe_stages(c: &mut Criterion) {
+    let p = DescriptorParams::outdoor();
+    let mut g = c.benchmark_group("describe");
+    let kitti = read_scan(
+        &std::fs::read(format!("{REAL}/kitti00/000094.bin")).unwrap(),
+        "a.bin",
+        &ReadLimits::default(),
+    )
+    .unwrap()
+    .points;
+    for (label, pts) in [
+        ("real_kitti_121k", kitti),
+        ("sim_100k", sim_scan(64, 1800)),
+        ("sim_1M", sim_scan(128, 8192)),
+    ] {
+        g.throughput(Throughput::Elements(pts.len() as u64));
+        g.bench_with_input(
+            BenchmarkId::new("ndt_grid+classify", label),
+            &pts,
+            |b, x| {
+                b.iter(|| {
+                    let grid = ndt_grid::build(x, p.voxel_size, p.min_points_per_voxel);
+                    grid.cells
+                        .iter()
+                        .filter_map(|c| shape::classify(c, p.eigen_threshold))
+                        .count()
+                })
+            },
+        );
+        let grid = ndt_grid::build(&pts, p.voxel_size, p.min_points_per_voxel);
+        let cells: Vec<_> = grid
+            .cells
+            .iter()
+            .filter_map(|c| shape::classify(c, p.eigen_threshold))
+            .collect();
+        g.bench_with_input(
+            BenchmarkId::new("alignment+histogram", label),
+            &cells,
+            |b, x| b.iter(|| histogram::histograms(x, &alignment::candidates(x, &p), &p).len()),
+        );
+        g.bench_with_input(
+            BenchmarkId::new("read+describe_total", label),
+            &pts,
+            |b, x| b.iter(|| describe(x, &p).unwrap().total()),
+        );
+    }
+    g.finish();
+}
+
+/// n descriptors: real-sized simulated ones, reused with noise.
+fn many_descriptors(n: usize) -> Vec<Descriptor> {
+    let p = DescriptorParams::indoor();
+    let mut sp = SimParams::new(SceneKind::Indoor, 3);
+    sp.scans = 4;
+    let sim = Simulation::new(&sp).unwrap();
+    let base: Vec<Descriptor> = (0..sim.len())
+        .map(|i| describe(&sim.scan(i).points, &p).unwrap())
+        .collect();
+    let mut r = rng(5);
+    use rand::Rng;
+    (0..n)
+        .map(|i| {
+            let mut d = base[i % base.len()].clone();
+            for m in &mut d.matrices {
+                for v in m.iter_mut() {
+                    *v += r.random_range(0..3);
+                }
+            }
+            d
+        })
+        .collect()
+}
+
+fn distances_and_clustering(c: &mut Criterion) {
+    let mut g = c.benchmark_group("cluster");
+    let o = DistanceOptions::default();
+    for n in [500usize, 2000] {
+        let ds = many_descriptors(n);
+        let pairs = (n * (n - 1) / 2) as u64;
+        g.throughput(Throughput::Elements(pairs));
+        g.bench_with_input(BenchmarkId::new("delta_matrix", n), &ds, |b, x| {
+            b.iter(|| delta_matrix(x, o).unwrap().n)
+        });
+        g.throughput(Throughput::Elements(n as u64));
+        let space = Space::new(&ds, o).unwrap();
+        g.bench_with_input(BenchmarkId::new("kmeans_pp_k5", n), &space, |b, s| {
+            b.iter(|| KMeans::fit(s, &KMeansParams::new(5)).unwrap().iterations)
+        });
+        let m = delta_matrix(&ds, o).unwrap();
+        g.bench_with_input(BenchmarkId::new("hkmeans_tree", n), &m, |b, m| {
+            b.iter(|| {
+                HierarchicalKMeans::fit(&space, m, &HkMeansParams::new(0))
+                    .unwrap()
+                    .nodes
+                    .len()
+            })
+        });
+        g.bench_with_input(BenchmarkId::new("dbscan", n), &m, |b, m| {
+            b.iter(|| Dbscan::fit(m, &DbscanParams::new(0.3, 4)).unwrap().len())
+        });
+    }
+    g.finish();
+}
+
+criterion_group! { name = benches; config = config(); targets = read, describe_stages, distances_and_clustering }
+criterion_main!(benches);

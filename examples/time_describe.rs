@@ -1,0 +1,33 @@
+//! Times read + describe (outdoor preset) of each file natively, one core,
+//! median of 5 runs after a warm-up; prints JSON. Used by bench/run.mjs to
+//! compare with the wasm build on the same files.
+use placecat::io::{read_scan, ReadLimits};
+use placecat::{describe, DescriptorParams};
+use std::time::Instant;
+
+fn main() {
+    let p = DescriptorParams::outdoor();
+    let mut out = serde_json::Map::new();
+    for path in std::env::args().skip(1) {
+        let bytes = std::fs::read(&path).unwrap();
+        let mut times = Vec::new();
+        let mut points = 0;
+        for r in 0..6 {
+            let t = Instant::now();
+            let c = read_scan(&bytes, &path, &ReadLimits::default()).unwrap();
+            let d = describe(&c.points, &p).unwrap();
+            let dt = t.elapsed().as_secs_f64();
+            points = c.points.len();
+            std::hint::black_box(d);
+            if r > 0 {
+                times.push(dt);
+            }
+        }
+        times.sort_by(f64::total_cmp);
+        out.insert(
+            path,
+            serde_json::json!({"points": points, "seconds": times[times.len() / 2]}),
+        );
+    }
+    println!("{}", serde_json::Value::Object(out));
+}
