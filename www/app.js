@@ -6,6 +6,7 @@ import { Dendrogram } from './dendrogram.js';
 import { TrajectoryMap } from './map.js';
 import { colour, drawThumbnail } from './colours.js';
 import { loadNames, saveNames, datasetId } from './store.js';
+import { beginSession, saveScan, lastSession } from './session.js';
 import { filesFromDrop, filesFromInput, isScan, isTruth, isPoses, baseName } from './files.js';
 
 const $ = (id) => document.getElementById(id);
@@ -142,6 +143,9 @@ async function describeAll() {
   }
   state.params = params;
   state.running = true;
+  // A newer run supersedes this one: it stops touching the page.
+  const token = (state.runToken = (state.runToken || 0) + 1);
+  const current = () => token === state.runToken;
   $('progress').dataset.state = 'running';
   const total = state.inputs.length;
   const results = new Array(total);
@@ -149,6 +153,7 @@ async function describeAll() {
   const t0 = performance.now();
   $('progress').hidden = false;
   const tick = () => {
+    if (!current()) return;
     const secs = (performance.now() - t0) / 1000;
     const rate = done / Math.max(secs, 1e-3);
     const left = rate > 0 ? (total - done) / rate : 0;
@@ -156,17 +161,30 @@ async function describeAll() {
     $('progress-text').textContent = `${done} / ${total} scans, ${rate.toFixed(1)} scans/s, ${left.toFixed(0)} s left`;
   };
   tick();
+  const session = beginSession(state.datasetId, { total, preset: $('preset').value, params });
   const jobs = state.inputs.map((input, i) => {
     const task = input.sim
       ? { type: 'simulate', ...input.sim, params }
       : { type: 'describe', file: input.file, name: input.name, params };
+    // Test hook: make the worker die on this file (see tests/e2e).
+    if (window.placecat.crashOn && input.name === window.placecat.crashOn) task.crash = true;
     return pool.run(task).then(
-      (r) => { results[i] = r; },
-      (e) => { if (e.message !== 'cancelled') addError(input.name, e.message); },
-    ).finally(() => { done++; tick(); });
+      (r) => {
+        results[i] = r;
+        if (current()) session.then(() => saveScan(state.datasetId, i, r));
+        done++;
+      },
+      (e) => {
+        if (e.message === 'cancelled') return;
+        if (current()) addError(input.name, e.message);
+        done++;
+      },
+    ).finally(tick);
   });
   await Promise.all(jobs);
+  if (!current()) return;
   state.running = false;
+  tick();
   $('progress-text').textContent += done < total ? ' (cancelled)' : ' (done)';
   $('progress-bar').value = 1;
   $('progress').dataset.state = 'done';
@@ -493,8 +511,25 @@ function showMethod() {
   for (const div of document.querySelectorAll('[data-for]')) div.hidden = div.dataset.for !== $('method').value;
 }
 
+/** Show the scans of the last session (e.g. after a reload mid-run). */
+async function restore() {
+  const last = await lastSession();
+  if (!last) return;
+  state.datasetId = last.datasetId;
+  state.anchors = loadNames(last.datasetId);
+  state.params = last.params;
+  if (last.preset) $('preset').value = last.preset;
+  showPreset();
+  state.scans = last.scans.map((s) => ({ ...s }));
+  if (state.scans.some((s) => s.label)) state.truth = new Map(state.scans.map((s) => [s.name, s.label]));
+  state.inputs = [];
+  $('info').textContent = `Restored ${state.scans.length} of ${last.total} scans from the last session. Load the files again to describe the rest.`;
+  buildSet();
+}
+
 async function main() {
   await init();
+  window.placecat = { pool, state, crashOn: null };
   showPreset();
   showMethod();
   dendrogram.draw();
@@ -523,6 +558,7 @@ async function main() {
   $('export-model').addEventListener('click', exportModel);
   $('import').addEventListener('change', (e) => e.target.files[0] && importFile(e.target.files[0]));
   $('classify').addEventListener('change', (e) => classifyFiles(e.target.files));
+  await restore();
   document.body.dataset.ready = 'true';
 }
 

@@ -24,6 +24,12 @@ function result(scan, extra = {}) {
 
 async function run(task) {
   await ready;
+  if (task.crash || task.type === 'crash') {
+    // For the fault tests: die as a worker does when it runs out of
+    // memory, outside any handler, leaving the task unanswered.
+    setTimeout(() => { throw new Error('worker crashed on purpose'); });
+    return new Promise(() => {});
+  }
   if (task.type === 'describe') {
     const bytes = new Uint8Array(await task.file.arrayBuffer());
     return result(describeScan(bytes, task.name, task.params, undefined, task.previewPoints ?? 3000));
@@ -52,10 +58,6 @@ async function run(task) {
     const c = model.classify(scan);
     scan.free();
     return { name: task.name, ...c };
-  }
-  if (task.type === 'crash') {
-    // For the fault tests: a worker that dies mid-task.
-    throw new Error('worker crashed on purpose');
   }
   throw new Error(`unknown task ${task.type}`);
 }

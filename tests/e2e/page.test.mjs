@@ -124,6 +124,48 @@ test('the demo runs with no files and shows accuracy against its ground truth', 
   await h.page.screenshot({ path: join(ARTIFACTS, 'demo-indoor.png') });
 });
 
+test('a worker that dies mid-file is replaced, the file reported, the rest described', async () => {
+  await h.page.evaluate(() => { window.placecat.crashOn = '000095.bin'; });
+  await afterRun(h.page, () => h.page.setInputFiles('#files', realFiles));
+  await h.page.evaluate(() => { window.placecat.crashOn = null; });
+  const errors = await h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent));
+  assert.equal(errors.length, 1);
+  assert.match(errors[0], /000095\.bin: the worker failed/);
+  assert.match(await h.page.textContent('#cluster-status'), /from 17 scans/);
+  // The replaced worker works: describe again (another list, so the input
+  // fires), all 18 good files.
+  await afterRun(h.page, () => h.page.setInputFiles('#files', [...realFiles, bad]));
+  assert.match(await h.page.textContent('#cluster-status'), /from 18 scans/);
+});
+
+test('cancel in the middle keeps the scans described so far, clustered', async () => {
+  await afterRun(h.page, async () => {
+    await h.page.click('#demo-outdoor');
+    await h.page.waitForFunction(() => /^([5-9]|\d\d+) \//.test(document.getElementById('progress-text').textContent));
+    await h.page.click('#cancel');
+  });
+  assert.match(await h.page.textContent('#progress-text'), /\(cancelled\)/);
+  const n = Number((await h.page.textContent('#cluster-status')).match(/from (\d+) scans/)[1]);
+  assert.ok(n >= 5 && n < 90, `${n} scans kept`);
+  assert.ok((await inkedPixels(h.page, 'dendrogram')) > 1000);
+});
+
+test('a reload during processing keeps the results so far and the names', async () => {
+  await afterRun(h.page, () => h.page.click('#demo-indoor'));
+  await h.page.locator('#legend input').first().fill('pantry');
+  await h.page.click('#demo-indoor');
+  await h.page.waitForFunction(() => /^([5-9]|\d\d+) \//.test(document.getElementById('progress-text').textContent));
+  await h.page.reload();
+  await h.page.waitForFunction(() => document.body.dataset.ready === 'true');
+  const info = await h.page.textContent('#info');
+  const m = info.match(/Restored (\d+) of 40 scans/);
+  assert.ok(m, info);
+  assert.match(await h.page.textContent('#cluster-status'), new RegExp(`from ${m[1]} scans`));
+  const names = await h.page.evaluate(() => localStorage.getItem('placecat:names:demo-indoor-1-8'));
+  assert.match(names, /pantry/);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'restored-after-reload.png') });
+});
+
 test('no console errors and no requests beyond the page origin', async () => {
   assert.deepEqual(h.problems, []);
   const foreign = h.requests.filter((u) => !u.startsWith(h.url) && !u.startsWith('blob:') && !u.startsWith('data:'));
