@@ -18,6 +18,9 @@ cargo clippy --target wasm32-unknown-unknown --no-default-features --release --l
 step "Rust tests"
 cargo test --release
 
+step "Fuzz regressions in a debug build (the optimiser can delete a loop that hangs)"
+cargo test --test fuzz_regressions
+
 for s in scripts/test-*.sh; do
   [ -e "$s" ] || continue
   step "$s"

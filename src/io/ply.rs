@@ -366,6 +366,11 @@ fn read_ascii(
             .ok_or_else(|| Error::Ply(format!("bad list length {t:?} in {}", what())))
     };
     for el in before {
+        // A record of no properties takes no tokens: skipping a claimed
+        // 10^13 of them must not loop (found by the fuzzer).
+        if el.props.is_empty() {
+            continue;
+        }
         for r in 0..el.count {
             let what = || format!("element {} record {r}", el.name);
             for p in &el.props {
