@@ -13,7 +13,7 @@ cargo fmt --check
 
 step "cargo clippy (native, and wasm32 with the wasm tests)"
 cargo clippy --all-targets --release -- -D warnings
-cargo clippy --target wasm32-unknown-unknown --no-default-features --release --lib --tests -- -D warnings
+cargo clippy --target wasm32-unknown-unknown --no-default-features --release --lib --test web --test node -- -D warnings
 
 step "Rust tests"
 cargo test --release

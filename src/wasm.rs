@@ -181,6 +181,11 @@ pub struct DescriptorSet {
     matrix: Option<DistanceMatrix>,
 }
 
+/// Above this many scans the n x n Delta matrix is not built (it would take
+/// n^2 * 4 bytes): hierarchical k-means++ and k-means take their
+/// centre-based paths, DBSCAN and k-medoids are refused.
+pub const MATRIX_LIMIT: usize = 5000;
+
 impl DescriptorSet {
     fn opts(&self) -> DistanceOptions {
         DistanceOptions::from(&self.params)
@@ -189,6 +194,12 @@ impl DescriptorSet {
         Space::new(&self.descriptors, self.opts()).map_err(js_err)
     }
     fn matrix(&mut self) -> WasmResult<&DistanceMatrix> {
+        if self.descriptors.len() > MATRIX_LIMIT {
+            return Err(JsError::new(&format!(
+                "invalid parameter: this needs the n x n Delta matrix, and {} scans are more than the {MATRIX_LIMIT} it is built for; use k-means or hierarchical k-means++",
+                self.descriptors.len()
+            )));
+        }
         if self.matrix.is_none() {
             self.matrix =
                 Some(crate::delta_matrix(&self.descriptors, self.opts()).map_err(js_err)?);
@@ -292,14 +303,48 @@ impl DescriptorSet {
         Ok(js_sys::Int32Array::from(&labels[..]))
     }
     /// Hierarchical k-means++: the whole tree, to cut at any threshold.
+    /// Above `matrixLimit` scans it runs without the n x n matrix (see
+    /// `usesMatrix`): heights of nodes over 1500 scans are then an upper
+    /// bound of the diameter.
     pub fn hkmeans(&mut self, seed: u32) -> WasmResult<ClusterTree> {
         self.check_nonempty()?;
         let space = self.space()?;
-        let m = self.matrix()?;
+        let params = HkMeansParams::new(seed.into());
+        let tree = if self.uses_matrix() {
+            let m = self.matrix()?;
+            HierarchicalKMeans::fit(&space, m, &params)
+        } else {
+            HierarchicalKMeans::fit_without_matrix(&space, &params)
+        };
         Ok(ClusterTree {
-            tree: HierarchicalKMeans::fit(&space, m, &HkMeansParams::new(seed.into()))
-                .map_err(js_err)?,
+            tree: tree.map_err(js_err)?,
         })
+    }
+    /// True when the set is small enough for the n x n Delta matrix.
+    #[wasm_bindgen(getter, js_name = usesMatrix)]
+    pub fn uses_matrix(&self) -> bool {
+        self.descriptors.len() <= MATRIX_LIMIT
+    }
+    /// The largest set for which the Delta matrix is built.
+    #[wasm_bindgen(getter, js_name = matrixLimit)]
+    pub fn matrix_limit(&self) -> usize {
+        MATRIX_LIMIT
+    }
+    /// The most central scan of each category: flat pairs
+    /// `[label0, index0, label1, index1, ...]` (sampled above 64 members).
+    pub fn medoids(&self, labels: &[i32]) -> WasmResult<js_sys::Int32Array> {
+        if labels.len() != self.descriptors.len() {
+            return Err(JsError::new(&format!(
+                "mismatch: {} labels for {} scans",
+                labels.len(),
+                self.descriptors.len()
+            )));
+        }
+        let flat: Vec<i32> = cluster::medoids(&self.space()?, labels, 64, 0)
+            .into_iter()
+            .flat_map(|(l, i)| [l, i as i32])
+            .collect();
+        Ok(js_sys::Int32Array::from(&flat[..]))
     }
     /// Evaluate labels against ground-truth names (array of strings).
     /// Returns `{accuracy, ari, score, inliers, total, confusion}`.

@@ -137,6 +137,21 @@ fn describe_with_params_file_and_all_failing_exits_nonzero() {
     assert_eq!(v["params"]["voxel_size"], 0.5);
     assert_eq!(v["files"][0]["descriptor"]["rows"], 22);
 
+    // A limit on points: the scan is refused with a clear error, the run fails.
+    let out = placecat()
+        .args(["describe", "--max-points", "1000"])
+        .arg(dir.join("s.ply"))
+        .arg("-o")
+        .arg(dir.join("l.json"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        e.contains("s.ply") && e.contains("more than the limit of 1000"),
+        "{e}"
+    );
+
     std::fs::write(dir.join("bad.bin"), [1u8, 2, 3]).unwrap();
     let out = placecat()
         .arg("describe")

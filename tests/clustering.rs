@@ -238,3 +238,74 @@ fn kmedoids_and_clusters_are_partitions() {
     let ev = evaluate(&truth, &labels).unwrap();
     assert!(ev.accuracy > 0.4, "{}", ev.accuracy);
 }
+
+#[test]
+fn without_the_matrix_small_trees_are_identical_and_large_ones_monotone() {
+    let (ds, _) = sim_set(4, 15);
+    let opts = DistanceOptions::default();
+    let space = Space::new(&ds, opts).unwrap();
+    let m = delta_matrix(&ds, opts).unwrap();
+    let with = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(2)).unwrap();
+    let without = HierarchicalKMeans::fit_without_matrix(&space, &HkMeansParams::new(2)).unwrap();
+    assert_eq!(with, without);
+
+    // 1,600 small random descriptors: the root is above the exact limit, so
+    // its height is the 2 x radius bound.
+    use rand::Rng;
+    let mut r = common::rng(9);
+    let many: Vec<Descriptor> = (0..1600)
+        .map(|_| Descriptor {
+            rows: 3,
+            cols: 2,
+            matrices: vec![(0..6)
+                .map(|k| r.random_range(0..20) + u32::from(k == 0))
+                .collect()],
+            summary: Default::default(),
+        })
+        .collect();
+    let space = Space::new(&many, opts).unwrap();
+    let tree = HierarchicalKMeans::fit_without_matrix(&space, &HkMeansParams::new(0)).unwrap();
+    let mut true_diameter = 0f32;
+    for i in (0..1600).step_by(7) {
+        for j in 0..1600 {
+            true_diameter = true_diameter.max(space.delta(i, j));
+        }
+    }
+    assert!(
+        tree.nodes[0].height >= true_diameter,
+        "bound {} < a real distance {true_diameter}",
+        tree.nodes[0].height
+    );
+    for n in &tree.nodes {
+        if let Some(p) = n.parent {
+            assert!(tree.nodes[p].height >= n.height);
+        }
+    }
+    let (a, b) = (tree.cut_k(4).unwrap(), tree.cut_k(8).unwrap());
+    assert_eq!((a.nodes.len(), b.nodes.len()), (4, 8));
+}
+
+#[test]
+fn medoids_are_members_and_exact_for_small_categories() {
+    let (ds, _) = sim_set(4, 16);
+    let opts = DistanceOptions::default();
+    let space = Space::new(&ds, opts).unwrap();
+    let m = delta_matrix(&ds, opts).unwrap();
+    let labels = KMeans::fit(&space, &KMeansParams::new(4).seeding(Seeding::Stride))
+        .unwrap()
+        .labels;
+    for (label, med) in medoids(&space, &labels, 64, 0) {
+        assert_eq!(labels[med], label);
+        let cost = |a: usize| {
+            (0..20)
+                .filter(|&b| labels[b] == label)
+                .map(|b| m.get(a, b) as f64)
+                .sum::<f64>()
+        };
+        let best = (0..20)
+            .filter(|&a| labels[a] == label)
+            .map(cost)
+            .fold(f64::INFINITY, f64::min);
+        assert!((cost(med) - best).abs() < 1e-4);
+    }
+}

@@ -20,7 +20,6 @@ const state = {
   truth: null, // Map name -> label
   params: null,
   set: null,
-  matrix: null,
   tree: null,
   labels: null,
   categories: [], // [{label, members, medoid}]
@@ -58,7 +57,6 @@ function resetResults() {
   state.tree?.free();
   state.tree = null;
   state.labels = null;
-  state.matrix = null;
   state.categories = [];
   $('errors').replaceChildren();
   $('errors-box').hidden = true;
@@ -206,7 +204,6 @@ function buildSet() {
   state.set?.free();
   state.set = new DescriptorSet(state.params, undefined);
   for (const s of state.scans) state.set.addJson(s.descriptorJson);
-  state.matrix = state.scans.length ? state.set.deltaMatrix() : null;
   state.tree?.free();
   state.tree = null;
   $('threshold').value = '';
@@ -254,19 +251,12 @@ function setThreshold(t) {
 
 /** Categories from labels: members and the most central member (medoid). */
 function categoriesOf(labels) {
-  const n = labels.length;
-  const ids = [...new Set(labels)].filter((l) => l >= 0).sort((a, b) => a - b);
-  return ids.map((label) => {
-    const members = [];
-    for (let i = 0; i < n; i++) if (labels[i] === label) members.push(i);
-    let medoid = members[0], best = Infinity;
-    for (const a of members) {
-      let s = 0;
-      for (const b of members) s += state.matrix[a * n + b];
-      if (s < best) { best = s; medoid = a; }
-    }
-    return { label, members, medoid };
-  });
+  const medoid = new Map();
+  const flat = state.set.medoids(labels);
+  for (let k = 0; k < flat.length; k += 2) medoid.set(flat[k], flat[k + 1]);
+  const members = new Map([...medoid.keys()].map((l) => [l, []]));
+  labels.forEach((l, i) => l >= 0 && members.get(l).push(i));
+  return [...medoid.keys()].sort((a, b) => a - b).map((label) => ({ label, members: members.get(label), medoid: medoid.get(label) }));
 }
 
 function nameOf(cat) {
@@ -313,7 +303,8 @@ function render() {
     : 'Categories along the scan sequence (no poses file): click a scan';
   map.set({ scans: state.scans, labels: colourIdx, usePoses });
   const noise = state.labels.filter((l) => l < 0).length;
-  $('cluster-status').textContent = `${state.categories.length} categories${noise ? `, ${noise} noise` : ''} from ${n} scans`;
+  const path = state.set.usesMatrix ? '' : ` (centre-based path: more than ${state.set.matrixLimit} scans, no Delta matrix)`;
+  $('cluster-status').textContent = `${state.categories.length} categories${noise ? `, ${noise} noise` : ''} from ${n} scans${path}`;
   $('cluster-status').dataset.categories = String(state.categories.length);
   renderAccuracy();
 }

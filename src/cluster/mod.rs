@@ -7,12 +7,14 @@ pub mod dbscan;
 pub mod hkmeans;
 pub mod kmeans;
 pub mod kmedoids;
+mod medoid;
 mod space;
 
 pub use dbscan::{Dbscan, DbscanParams};
 pub use hkmeans::{HierarchicalKMeans, Tree, TreeNode};
 pub use kmeans::{KMeans, KMeansParams, Seeding};
 pub use kmedoids::KMedoids;
+pub use medoid::medoids;
 pub use space::{Centre, Space};
 
 use rand::SeedableRng;

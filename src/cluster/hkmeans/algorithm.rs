@@ -9,9 +9,28 @@ use rand_chacha::ChaCha8Rng;
 /// Builds the whole tree once; any threshold is then a cut of it.
 pub struct HierarchicalKMeans;
 
+/// Nodes up to this size get their exact diameter when there is no matrix.
+pub const EXACT_DIAMETER_LIMIT: usize = 1500;
+
 impl HierarchicalKMeans {
     /// `matrix` is the Delta matrix of the same scans (for diameters).
     pub fn fit(space: &Space, matrix: &DistanceMatrix, params: &HkMeansParams) -> Result<Tree> {
+        Self::fit_with(space, Some(matrix), params)
+    }
+
+    /// Without an n x n matrix, for data sets where it does not fit: node
+    /// heights are exact diameters up to [`EXACT_DIAMETER_LIMIT`] scans, and
+    /// above it twice the largest Delta to the node's centre (an upper bound
+    /// of the diameter), never more than the parent's height.
+    pub fn fit_without_matrix(space: &Space, params: &HkMeansParams) -> Result<Tree> {
+        Self::fit_with(space, None, params)
+    }
+
+    fn fit_with(
+        space: &Space,
+        matrix: Option<&DistanceMatrix>,
+        params: &HkMeansParams,
+    ) -> Result<Tree> {
         params.check(space.len())?;
         let mut nodes = Vec::with_capacity(2 * space.len());
         let mut r = rng(params.seed);
@@ -23,17 +42,47 @@ impl HierarchicalKMeans {
     }
 }
 
-fn diameter(matrix: &DistanceMatrix, members: &[usize]) -> (f32, usize, usize) {
-    let mut best = (0f32, members[0], members[0]);
-    for (a, &i) in members.iter().enumerate() {
-        for &j in &members[a + 1..] {
-            let d = matrix.get(i, j);
-            if d > best.0 {
-                best = (d, i, j);
+/// The node's height and two far-apart members (to split around if 2-means
+/// cannot split).
+fn height(
+    space: &Space,
+    matrix: Option<&DistanceMatrix>,
+    members: &[usize],
+    parent: f32,
+) -> (f32, usize, usize) {
+    let d = |i: usize, j: usize| match matrix {
+        Some(m) => m.get(i, j),
+        None => space.delta(i, j),
+    };
+    if matrix.is_some() || members.len() <= EXACT_DIAMETER_LIMIT {
+        let mut best = (0f32, members[0], members[0]);
+        for (a, &i) in members.iter().enumerate() {
+            for &j in &members[a + 1..] {
+                let v = d(i, j);
+                if v > best.0 {
+                    best = (v, i, j);
+                }
             }
         }
+        return best;
     }
-    best
+    // Bound: every member is within r of the centre, so any two within 2r.
+    let mut centre = space.centre_of(members[0]);
+    centre = space.mean(members, &centre).expect("members is not empty");
+    let (mut far, mut r) = (members[0], 0f32);
+    for &i in members {
+        let v = space.to_centre(&centre, i).0;
+        if v > r {
+            r = v;
+            far = i;
+        }
+    }
+    let other = members
+        .iter()
+        .copied()
+        .max_by(|&a, &b| d(far, a).total_cmp(&d(far, b)))
+        .unwrap_or(far);
+    ((2.0 * r).min(parent), far, other)
 }
 
 /// A node still to build: its members and (parent index, child slot).
@@ -41,7 +90,7 @@ type Pending = (Vec<usize>, Option<(usize, usize)>);
 
 fn build(
     space: &Space,
-    matrix: &DistanceMatrix,
+    matrix: Option<&DistanceMatrix>,
     params: &HkMeansParams,
     root: Vec<usize>,
     nodes: &mut Vec<TreeNode>,
@@ -49,7 +98,8 @@ fn build(
 ) {
     let mut stack: Vec<Pending> = vec![(root, None)];
     while let Some((members, parent)) = stack.pop() {
-        let (height, far_a, far_b) = diameter(matrix, &members);
+        let parent_height = parent.map_or(f32::INFINITY, |(p, _)| nodes[p].height);
+        let (height, far_a, far_b) = height(space, matrix, &members, parent_height);
         let id = nodes.len();
         nodes.push(TreeNode {
             members: members.clone(),
@@ -88,8 +138,9 @@ fn build(
             // scans that make the diameter, so the tree always deepens.
             left.clear();
             right.clear();
+            let d = |i: usize, j: usize| matrix.map_or_else(|| space.delta(i, j), |m| m.get(i, j));
             for &m in &members {
-                if matrix.get(m, far_a) <= matrix.get(m, far_b) {
+                if d(m, far_a) <= d(m, far_b) {
                     left.push(m);
                 } else {
                     right.push(m);

@@ -91,6 +91,7 @@ pub fn run(
     params: Option<&Path>,
     inputs: &[PathBuf],
     output: &Path,
+    limits: &ReadLimits,
 ) -> Result<ExitCode> {
     let params = load_params(preset, params)?;
     params.validate()?;
@@ -100,14 +101,13 @@ pub fn run(
             "no scan files in the inputs".into(),
         ));
     }
-    let limits = ReadLimits::default();
     let bar = progress::bar(files.len() as u64, "describing");
     // Files in parallel; each worker holds one file's points at a time.
     let results: Vec<std::result::Result<DescribedFile, FileError>> = files
         .par_iter()
         .map(|path| {
             let shown = path.display().to_string();
-            let out = read_path(path, &limits)
+            let out = read_path(path, limits)
                 .and_then(|cloud| {
                     placecat::describe(&cloud.points, &params).map_err(|e| e.in_file(&shown))
                 })

@@ -42,6 +42,12 @@ enum Command {
         inputs: Vec<PathBuf>,
         #[arg(short, long)]
         output: PathBuf,
+        /// Refuse scans with more points (checked before allocating).
+        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_points)]
+        max_points: usize,
+        /// Refuse files larger than this many bytes.
+        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_bytes)]
+        max_bytes: usize,
     },
     /// Cluster described scans into categories.
     Cluster {
@@ -107,7 +113,18 @@ pub fn main() -> ExitCode {
             params,
             inputs,
             output,
-        } => describe::run(&preset, params.as_deref(), &inputs, &output),
+            max_points,
+            max_bytes,
+        } => describe::run(
+            &preset,
+            params.as_deref(),
+            &inputs,
+            &output,
+            &placecat::io::ReadLimits {
+                max_points,
+                max_bytes,
+            },
+        ),
         Command::Cluster {
             descriptors,
             method,

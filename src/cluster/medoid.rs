@@ -1,0 +1,40 @@
+//! The most central scan of each category (for thumbnails and names).
+
+use super::Space;
+use rand::seq::index::sample;
+
+/// For each category label >= 0 (ascending), the member with the smallest
+/// summed Delta to the others: exact for categories of up to `max_sample`
+/// scans, else to `max_sample` members drawn with the seeded RNG, so the
+/// cost is O(n * max_sample) and needs no n x n matrix.
+pub fn medoids(space: &Space, labels: &[i32], max_sample: usize, seed: u64) -> Vec<(i32, usize)> {
+    let mut ids: Vec<i32> = labels.iter().copied().filter(|&l| l >= 0).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    let mut r = super::rng(seed);
+    ids.into_iter()
+        .map(|id| {
+            let members: Vec<usize> = (0..labels.len()).filter(|&i| labels[i] == id).collect();
+            let probe: Vec<usize> = if members.len() <= max_sample.max(1) {
+                members.clone()
+            } else {
+                sample(&mut r, members.len(), max_sample.max(1))
+                    .into_iter()
+                    .map(|k| members[k])
+                    .collect()
+            };
+            let best = members
+                .iter()
+                .copied()
+                .map(|m| {
+                    (
+                        m,
+                        probe.iter().map(|&p| space.delta(m, p) as f64).sum::<f64>(),
+                    )
+                })
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+                .map_or(members[0], |(m, _)| m);
+            (id, best)
+        })
+        .collect()
+}
