@@ -44,8 +44,21 @@ pub struct Prepared {
     pub cols: usize,
     /// |F|.
     pub total: f32,
-    /// Normalised matrices, row-major.
+    /// Normalised matrices, column-major (each range interval's class
+    /// counts contiguous, so the per-column norm of Eq. 2 reads memory in
+    /// order; measured in benches/stages.rs, delta_matrix).
     pub matrices: Vec<Vec<f32>>,
+}
+
+/// Row-major rows x cols to column-major.
+fn transpose(m: &[f32], rows: usize, cols: usize) -> Vec<f32> {
+    let mut out = vec![0f32; m.len()];
+    for r in 0..rows {
+        for c in 0..cols {
+            out[c * rows + r] = m[r * cols + c];
+        }
+    }
+    out
 }
 
 impl Prepared {
@@ -55,7 +68,13 @@ impl Prepared {
         let matrices = d
             .matrices
             .iter()
-            .map(|m| normalise(m, d.rows, d.cols, opts.normalisation))
+            .map(|m| {
+                transpose(
+                    &normalise(m, d.rows, d.cols, opts.normalisation),
+                    d.rows,
+                    d.cols,
+                )
+            })
             .collect();
         Ok(Prepared {
             rows: d.rows,
@@ -89,19 +108,33 @@ pub fn normalise(m: &[u32], rows: usize, cols: usize, how: Normalisation) -> Vec
     }
 }
 
-/// Distance between two normalised matrices, before the size factor.
+/// Distance between two normalised column-major matrices (as in
+/// [`Prepared`]), before the size factor.
 #[inline]
 pub fn matrix_distance(a: &[f32], b: &[f32], rows: usize, cols: usize, metric: Metric) -> f32 {
+    matrix_distance_below(a, b, rows, cols, metric, f32::INFINITY)
+}
+
+/// As [`matrix_distance`], but may stop early and return any value >=
+/// `bound` once the distance is known to reach it (every term is >= 0).
+#[inline]
+pub fn matrix_distance_below(
+    a: &[f32],
+    b: &[f32],
+    rows: usize,
+    cols: usize,
+    metric: Metric,
+    bound: f32,
+) -> f32 {
     match metric {
         Metric::Paper => {
             let mut sum = 0f32;
-            for c in 0..cols {
-                let mut sq = 0f32;
-                for r in 0..rows {
-                    let d = a[r * cols + c] - b[r * cols + c];
-                    sq += d * d;
-                }
+            for (ca, cb) in a.chunks_exact(rows).zip(b.chunks_exact(rows)).take(cols) {
+                let sq: f32 = ca.iter().zip(cb).map(|(x, y)| (x - y) * (x - y)).sum();
                 sum += sq.sqrt();
+                if sum >= bound {
+                    return sum;
+                }
             }
             sum
         }
@@ -140,7 +173,7 @@ pub fn delta_prepared(a: &Prepared, b: &Prepared, metric: Metric) -> f32 {
     let mut best = f32::INFINITY;
     for fa in &a.matrices {
         for fb in &b.matrices {
-            best = best.min(matrix_distance(fa, fb, a.rows, a.cols, metric));
+            best = best.min(matrix_distance_below(fa, fb, a.rows, a.cols, metric, best));
         }
     }
     best * size_factor(a.total, b.total)

@@ -19,7 +19,7 @@ pub struct Category {
     pub label: i32,
     /// Scans it was made from.
     pub members: usize,
-    /// Normalised centre matrix (rows x cols, row-major).
+    /// Normalised centre matrix, column-major (cols blocks of rows values).
     pub centre: Vec<f32>,
     /// Members' mean |F|.
     pub total: f32,
