@@ -1,0 +1,41 @@
+// docs/benchmarks.md (+ .json) from criterion's results in target/criterion:
+// throughput per stage, and ratios against the peers measured in the same
+// run (ply-rs, the fixed-stride copy floor). Run after `cargo bench --bench stages`.
+import { readFileSync, readdirSync, existsSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+const root = new URL('..', import.meta.url).pathname;
+const crit = join(root, 'target/criterion');
+const rows = [];
+(function walk(dir) {
+  for (const e of readdirSync(dir, { withFileTypes: true })) {
+    const p = join(dir, e.name);
+    if (e.isDirectory() && e.name === 'new' && existsSync(join(p, 'estimates.json'))) {
+      const est = JSON.parse(readFileSync(join(p, 'estimates.json'), 'utf8'));
+      const meta = JSON.parse(readFileSync(join(p, 'benchmark.json'), 'utf8'));
+      const ns = est.median.point_estimate;
+      const elements = meta.throughput?.Elements ?? null;
+      rows.push({ id: meta.full_id, group: meta.group_id, func: meta.function_id, param: meta.value_str, seconds: ns / 1e9, elements, perSecond: elements ? elements / (ns / 1e9) : null });
+    } else if (e.isDirectory() && e.name !== 'report') walk(p);
+  }
+})(crit);
+rows.sort((a, b) => a.id.localeCompare(b.id));
+const find = (func, param) => rows.find((r) => r.func === func && r.param === param);
+const m = (x) => (x / 1e6).toFixed(1);
+const lines = ['# Native benchmarks', '', `criterion medians on this machine (\`cargo bench --bench stages\`, then \`node scripts/bench-table.mjs\`), ${new Date().toISOString().slice(0, 10)}. Single-threaded except the Delta matrix (rayon, all cores).`, ''];
+lines.push('## Reading PLY: placecat against ply-rs and the memory floor (same bytes, same run)', '', '| file | placecat Mpts/s | ply-rs Mpts/s | stride-copy floor Mpts/s | placecat / ply-rs | placecat / floor |', '|---|---|---|---|---|---|');
+for (const size of ['100k', '1M']) for (const fmt of ['ply_binary', 'ply_ascii']) {
+  const me = find(`${fmt}/placecat`, size);
+  if (!me) continue;
+  const peer = find(`${fmt}/ply-rs`, size);
+  const floor = fmt === 'ply_binary' ? find(`${fmt}/stride_copy_floor`, size) : null;
+  lines.push(`| ${fmt.replace('ply_', '')} ${size} | ${m(me.perSecond)} | ${peer ? m(peer.perSecond) : '-'} | ${floor ? m(floor.perSecond) : '-'} | ${peer ? (me.perSecond / peer.perSecond).toFixed(1) + 'x' : '-'} | ${floor ? (me.perSecond / floor.perSecond).toFixed(2) : '-'} |`);
+}
+lines.push('', '## Every stage', '', '| benchmark | median time | throughput |', '|---|---|---|');
+for (const r of rows) {
+  const unit = r.group === 'cluster' && r.func === 'delta_matrix' ? 'pairs/s' : r.group === 'cluster' ? 'scans/s' : 'points/s';
+  lines.push(`| ${r.id} | ${r.seconds < 1e-3 ? (r.seconds * 1e6).toFixed(1) + ' µs' : r.seconds < 1 ? (r.seconds * 1e3).toFixed(2) + ' ms' : r.seconds.toFixed(2) + ' s'} | ${r.perSecond ? m(r.perSecond) + ` M${unit}` : '-'} |`);
+}
+writeFileSync(join(root, 'docs/benchmarks.md'), lines.join('\n') + '\n');
+writeFileSync(join(root, 'docs/benchmarks.json'), JSON.stringify(rows, null, 2) + '\n');
+console.log(lines.join('\n'));
