@@ -157,7 +157,7 @@ mod tests {
 
     #[test]
     fn index_is_floor_and_packing_round_trips_in_order() {
-        for x in [-3.5, -3.0, -0.2, -0.0, 0.0, 0.2, 2.999, 3.0, 1e7, -1e7] {
+        for x in [-3.5f64, -3.0, -0.2, -0.0, 0.0, 0.2, 2.999, 3.0, 1e7, -1e7] {
             let want = x.floor().clamp(-(INDEX_LIMIT as f64), INDEX_LIMIT as f64) as i32;
             assert_eq!(voxel_index(x), want, "{x}");
         }
