@@ -141,17 +141,18 @@ pub fn candidates(cells: &[ShapedCell], params: &DescriptorParams) -> Vec<Rotati
 }
 
 fn paper(cells: &[ShapedCell], params: &DescriptorParams) -> Vec<Rotation> {
-    let dirs = directions::hemisphere(params.alignment_directions);
+    let index = directions::DirectionIndex::hemisphere(params.alignment_directions);
+    let dirs = index.directions();
     let mut counts = vec![0u32; dirs.len()];
     for c in cells.iter().filter(|c| c.shape == Shape::Planar) {
-        counts[directions::nearest(&dirs, &c.normal)] += 1;
+        counts[index.nearest(&c.normal)] += 1;
     }
     let ta = params.ambiguity_threshold;
-    let d1s = dominant(&counts, &dirs, ta, |_| true);
+    let d1s = dominant(&counts, dirs, ta, |_| true);
     let mut out = Vec::new();
     for &i in &d1s {
         let d1 = dirs[i];
-        let d2s = dominant(&counts, &dirs, ta, |j| {
+        let d2s = dominant(&counts, dirs, ta, |j| {
             dot(&dirs[j], &d1).abs() <= SECOND_DIRECTION_COS
         });
         let d2s: Vec<[f64; 3]> = if d2s.is_empty() {
