@@ -107,7 +107,7 @@ impl DirectionIndex {
             *v
         };
         let n = (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]).sqrt();
-        if !(n > 0.0) || !n.is_finite() {
+        if n.is_nan() || n <= 0.0 || !n.is_finite() {
             return nearest(&self.dirs, v);
         }
         let z = (u[2] / n).clamp(0.0, 1.0);
@@ -130,7 +130,8 @@ impl DirectionIndex {
     /// The index of `hemisphere(n)`, built once per n and shared.
     pub fn hemisphere(n: usize) -> std::sync::Arc<DirectionIndex> {
         use std::sync::{Arc, Mutex, OnceLock};
-        static CACHE: OnceLock<Mutex<Vec<(usize, Arc<DirectionIndex>)>>> = OnceLock::new();
+        type Cache = Mutex<Vec<(usize, Arc<DirectionIndex>)>>;
+        static CACHE: OnceLock<Cache> = OnceLock::new();
         let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
         let mut guard = cache.lock().unwrap_or_else(|e| e.into_inner());
         if let Some((_, idx)) = guard.iter().find(|(k, _)| *k == n) {
