@@ -86,13 +86,15 @@ fn main() {
         rows.push((n, [t_matrix, t_hk, Some(t_km), t_db], mem));
     }
     let mut out = String::new();
-    writeln!(out, "# Scaling of clustering\n\nRegenerate with `cargo run --release --example scaling` ({threads} threads for the Delta matrix; the rest is single-threaded). Seconds; growth exponent b in t ~ n^b between neighbouring sizes in brackets. Descriptors: simulated indoor scans reused with count noise (about 3 candidate orientations each).\n").unwrap();
+    writeln!(out, "# Scaling of clustering\n\nRegenerate with `cargo run --release --example scaling` (threads for the Delta matrix: {threads}, set with RAYON_NUM_THREADS; the rest is single-threaded). Seconds; growth exponent b in t ~ n^b between neighbouring sizes in brackets. Descriptors: simulated indoor scans reused with count noise (about 3 candidate orientations each).\n").unwrap();
     writeln!(out, "| n | Delta matrix | hierarchical k-means++ | k-means++ (k=5) | DBSCAN | matrix memory |\n|---|---|---|---|---|---|").unwrap();
     for (i, (n, t, mem)) in rows.iter().enumerate() {
         let cell = |k: usize| match t[k] {
             None => "not built (centre-based)".to_string(),
             Some(v) => {
-                let growth = i.checked_sub(1).and_then(|j| {
+                // Growth only between sizes that took the same path.
+                let same_path = |j: usize| (rows[j].0 <= MATRIX_LIMIT) == (*n <= MATRIX_LIMIT);
+                let growth = i.checked_sub(1).filter(|&j| same_path(j)).and_then(|j| {
                     rows[j].1[k].map(|p| (v / p).ln() / (*n as f64 / rows[j].0 as f64).ln())
                 });
                 match growth {

@@ -379,7 +379,14 @@ function hover(c, e) {
   const tip = $('tooltip');
   if (c < 0 || !dendrogram.catIndex) {
     tip.hidden = true;
+    if (state.hovered !== undefined) map.setHighlight(-1);
+    state.hovered = undefined;
     return;
+  }
+  // The map highlights the category under the pointer.
+  if (state.hovered !== dendrogram.catIndex[c]) {
+    state.hovered = dendrogram.catIndex[c];
+    map.setHighlight(state.hovered);
   }
   const cat = state.categories[dendrogram.catIndex[c]];
   tip.textContent = `${nameOf(cat) || `category ${dendrogram.catIndex[c] + 1}`}: ${cat.members.length} scans`;
