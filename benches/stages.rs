@@ -159,28 +159,8 @@ fn describe_stages(c: &mut Criterion) {
     g.finish();
 }
 
-/// n descriptors: real-sized simulated ones, reused with noise.
 fn many_descriptors(n: usize) -> Vec<Descriptor> {
-    let p = DescriptorParams::indoor();
-    let mut sp = SimParams::new(SceneKind::Indoor, 3);
-    sp.scans = 4;
-    let sim = Simulation::new(&sp).unwrap();
-    let base: Vec<Descriptor> = (0..sim.len())
-        .map(|i| describe(&sim.scan(i).points, &p).unwrap())
-        .collect();
-    let mut r = rng(5);
-    use rand::Rng;
-    (0..n)
-        .map(|i| {
-            let mut d = base[i % base.len()].clone();
-            for m in &mut d.matrices {
-                for v in m.iter_mut() {
-                    *v += r.random_range(0..3);
-                }
-            }
-            d
-        })
-        .collect()
+    placecat::sim::reused_descriptors(n, &DescriptorParams::indoor(), 5).unwrap()
 }
 
 fn distances_and_clustering(c: &mut Criterion) {

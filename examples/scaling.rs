@@ -10,34 +10,14 @@
 
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
-use placecat::sim::{SceneKind, SimParams, Simulation};
 use placecat::*;
-use rand::Rng;
 use std::fmt::Write;
 use std::time::Instant;
 
 const MATRIX_LIMIT: usize = 5000;
 
 fn descriptors(n: usize) -> Vec<Descriptor> {
-    let p = DescriptorParams::indoor();
-    let mut sp = SimParams::new(SceneKind::Indoor, 3);
-    sp.scans = 4;
-    let sim = Simulation::new(&sp).unwrap();
-    let base: Vec<Descriptor> = (0..sim.len())
-        .map(|i| describe(&sim.scan(i).points, &p).unwrap())
-        .collect();
-    let mut r = rng(5);
-    (0..n)
-        .map(|i| {
-            let mut d = base[i % base.len()].clone();
-            for m in &mut d.matrices {
-                for v in m.iter_mut() {
-                    *v += r.random_range(0..3);
-                }
-            }
-            d
-        })
-        .collect()
+    placecat::sim::reused_descriptors(n, &DescriptorParams::indoor(), 5).unwrap()
 }
 
 fn secs<T>(f: impl FnOnce() -> T) -> (T, f64) {

@@ -25,3 +25,12 @@ export function drawThumbnail(canvas, points, colourCss) {
     if (x >= 0 && x < w && y >= 0 && y < h) ctx.fillRect(x, y, 1, 1);
   }
 }
+
+/** Clear a canvas and write a hint where the view will appear. */
+export function drawPlaceholder(canvas, text) {
+  const ctx = canvas.getContext('2d');
+  ctx.clearRect(0, 0, canvas.width, canvas.height);
+  ctx.fillStyle = '#5b6575';
+  ctx.font = '14px system-ui';
+  ctx.fillText(text, 20, 40);
+}

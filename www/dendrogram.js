@@ -1,7 +1,7 @@
 // The dendrogram (paper Fig. 1b, 2): node heights are diameters; a red
 // threshold line the user drags; categories coloured at the cut, with a
 // thumbnail of each category's most central scan beneath its leaves.
-import { colour, drawThumbnail } from './colours.js';
+import { colour, drawThumbnail, drawPlaceholder } from './colours.js';
 
 const M = { left: 46, right: 12, top: 14, bottom: 64 };
 
@@ -115,13 +115,8 @@ export class Dendrogram {
 
   draw() {
     const { ctx, canvas } = this;
+    if (!this.data) return drawPlaceholder(canvas, 'Load scans or try the demo; the dendrogram of hierarchical k-means++ appears here.');
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    if (!this.data) {
-      ctx.fillStyle = '#5b6575';
-      ctx.font = '14px system-ui';
-      ctx.fillText('Load scans or try the demo; the dendrogram of hierarchical k-means++ appears here.', 20, 40);
-      return;
-    }
     const { nodes, x, cat, spans, threshold, top, central } = this.data;
     // Axis.
     ctx.strokeStyle = '#c5ccd6';

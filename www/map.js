@@ -1,7 +1,7 @@
 // The trajectory map (paper Fig. 1a): poses as a path coloured by category
 // over a faint top-down map of the scans' points placed by their poses.
 // Without poses: a strip of categories along the scan sequence (Fig. 4, 6).
-import { colour } from './colours.js';
+import { colour, drawPlaceholder } from './colours.js';
 
 export class TrajectoryMap {
   constructor(canvas, { onSelect }) {
@@ -113,13 +113,8 @@ export class TrajectoryMap {
 
   draw() {
     const { ctx, canvas } = this;
+    if (!this.data) return drawPlaceholder(canvas, 'The trajectory map (with a poses file) or the category strip appears here.');
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    if (!this.data) {
-      ctx.fillStyle = '#5b6575';
-      ctx.font = '14px system-ui';
-      ctx.fillText('The trajectory map (with a poses file) or the category strip appears here.', 20, 40);
-      return;
-    }
     const { scans, labels, usePoses } = this.data;
     const pos = this.#positions();
     if (usePoses) {

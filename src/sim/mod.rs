@@ -201,3 +201,31 @@ impl Simulation {
         }
     }
 }
+
+/// `n` descriptors for scaling studies and benchmarks: 20 simulated indoor
+/// scans (seed 3, 4 per kind) described with `params`, reused in turn with
+/// 0..=2 added to every count (seeded), so no two are identical.
+pub fn reused_descriptors(
+    n: usize,
+    params: &crate::DescriptorParams,
+    seed: u64,
+) -> Result<Vec<crate::Descriptor>> {
+    let mut sp = SimParams::new(SceneKind::Indoor, 3);
+    sp.scans = 4;
+    let sim = Simulation::new(&sp)?;
+    let base = (0..sim.len())
+        .map(|i| crate::describe(&sim.scan(i).points, params))
+        .collect::<Result<Vec<_>>>()?;
+    let mut r = crate::cluster::rng(seed);
+    Ok((0..n)
+        .map(|i| {
+            let mut d = base[i % base.len()].clone();
+            for m in &mut d.matrices {
+                for v in m.iter_mut() {
+                    *v += r.random_range(0..3);
+                }
+            }
+            d
+        })
+        .collect())
+}

@@ -14,15 +14,30 @@ use serde_json::{json, Value};
 use std::path::Path;
 use std::process::ExitCode;
 
-/// Options of `placecat cluster`, as parsed.
+/// Options of `placecat cluster`.
+#[derive(clap::Args)]
 pub struct ClusterArgs {
+    /// kmeans, hkmeans, dbscan, kmedoids.
+    #[arg(long)]
     pub method: String,
+    #[arg(long)]
     pub k: Option<usize>,
+    /// k-means seeding: random, stride, plusplus.
+    #[arg(long, default_value = "plusplus")]
     pub seeding: String,
+    #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// hkmeans: cut the tree at this height.
+    #[arg(long, allow_negative_numbers = true)]
     pub threshold: Option<f32>,
+    /// hkmeans: cut the tree where it gives this many categories.
+    #[arg(long)]
     pub categories: Option<usize>,
+    /// dbscan: neighbourhood radius (Delta <= eps).
+    #[arg(long, allow_negative_numbers = true)]
     pub eps: Option<f32>,
+    /// dbscan: neighbours of a core scan, itself included.
+    #[arg(long = "min-points")]
     pub min_points: Option<usize>,
 }
 

@@ -52,28 +52,8 @@ enum Command {
     /// Cluster described scans into categories.
     Cluster {
         descriptors: PathBuf,
-        /// kmeans, hkmeans, dbscan, kmedoids.
-        #[arg(long)]
-        method: String,
-        #[arg(long)]
-        k: Option<usize>,
-        /// k-means seeding: random, stride, plusplus.
-        #[arg(long, default_value = "plusplus")]
-        seeding: String,
-        #[arg(long, default_value_t = 0)]
-        seed: u64,
-        /// hkmeans: cut the tree at this height.
-        #[arg(long, allow_negative_numbers = true)]
-        threshold: Option<f32>,
-        /// hkmeans: cut the tree where it gives this many categories.
-        #[arg(long)]
-        categories: Option<usize>,
-        /// dbscan: neighbourhood radius (Delta <= eps).
-        #[arg(long, allow_negative_numbers = true)]
-        eps: Option<f32>,
-        /// dbscan: neighbours of a core scan, itself included.
-        #[arg(long = "min-points")]
-        min_points: Option<usize>,
+        #[command(flatten)]
+        args: cluster::ClusterArgs,
         #[arg(short, long)]
         output: PathBuf,
     },
@@ -127,29 +107,9 @@ pub fn main() -> ExitCode {
         ),
         Command::Cluster {
             descriptors,
-            method,
-            k,
-            seeding,
-            seed,
-            threshold,
-            categories,
-            eps,
-            min_points,
+            args,
             output,
-        } => cluster::cluster(
-            &descriptors,
-            &cluster::ClusterArgs {
-                method,
-                k,
-                seeding,
-                seed,
-                threshold,
-                categories,
-                eps,
-                min_points,
-            },
-            &output,
-        ),
+        } => cluster::cluster(&descriptors, &args, &output),
         Command::Evaluate { clusters, truth } => cluster::evaluate(&clusters, &truth),
         Command::Simulate {
             scene,
