@@ -148,7 +148,13 @@ fn describe_stages(c: &mut Criterion) {
         g.bench_with_input(
             BenchmarkId::new("alignment+histogram", label),
             &cells,
-            |b, x| b.iter(|| histogram::histograms(x, &alignment::candidates(x, &p), &p).len()),
+            |b, x| {
+                b.iter(|| {
+                    histogram::histograms(x, &alignment::candidates(x, &p), &p)
+                        .0
+                        .len()
+                })
+            },
         );
         g.bench_with_input(
             BenchmarkId::new("read+describe_total", label),

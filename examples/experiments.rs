@@ -58,7 +58,7 @@ struct Results {
 fn run(set: &Set, params: &DescriptorParams, k: usize) -> Results {
     let opts = DistanceOptions::from(params);
     let space = Space::new(&set.descriptors, opts).unwrap();
-    let m = delta_matrix(&set.descriptors, opts).unwrap();
+    let m = space.matrix();
     let stride = KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride)).unwrap();
     let mut hk = vec![];
     let mut tree0 = None;

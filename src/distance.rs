@@ -254,8 +254,5 @@ pub fn prepare_all(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<
 
 /// The full pairwise Delta matrix (parallel natively).
 pub fn delta_matrix(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<DistanceMatrix> {
-    let prepared = prepare_all(descriptors, opts)?;
-    Ok(DistanceMatrix::from_fn(prepared.len(), |i, j| {
-        delta_prepared(&prepared[i], &prepared[j], opts.metric)
-    }))
+    Ok(crate::cluster::Space::new(descriptors, opts)?.matrix())
 }

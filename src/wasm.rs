@@ -178,6 +178,9 @@ pub fn describe_scan(
 pub struct DescriptorSet {
     params: DescriptorParams,
     descriptors: Vec<Descriptor>,
+    /// Prepared once per content (each add clears it), with its matrix:
+    /// the page re-cuts and re-computes medoids on every threshold drag.
+    space: Option<Space>,
     matrix: Option<DistanceMatrix>,
 }
 
@@ -190,21 +193,53 @@ impl DescriptorSet {
     fn opts(&self) -> DistanceOptions {
         DistanceOptions::from(&self.params)
     }
-    fn space(&self) -> WasmResult<Space> {
-        Space::new(&self.descriptors, self.opts()).map_err(js_err)
-    }
-    fn matrix(&mut self) -> WasmResult<&DistanceMatrix> {
-        if self.descriptors.len() > MATRIX_LIMIT {
+    /// The prepared space, and the Delta matrix when `with_matrix`, each
+    /// computed once and kept until the set changes.
+    fn prepared(&mut self, with_matrix: bool) -> WasmResult<(&Space, Option<&DistanceMatrix>)> {
+        if with_matrix && self.descriptors.len() > MATRIX_LIMIT {
             return Err(JsError::new(&format!(
                 "invalid parameter: this needs the n x n Delta matrix, and {} scans are more than the {MATRIX_LIMIT} it is built for; use k-means or hierarchical k-means++",
                 self.descriptors.len()
             )));
         }
-        if self.matrix.is_none() {
-            self.matrix =
-                Some(crate::delta_matrix(&self.descriptors, self.opts()).map_err(js_err)?);
+        if self.space.is_none() {
+            self.space = Some(Space::new(&self.descriptors, self.opts()).map_err(js_err)?);
         }
-        Ok(self.matrix.as_ref().expect("just computed"))
+        let space = self.space.as_ref().expect("just prepared");
+        if with_matrix && self.matrix.is_none() {
+            self.matrix = Some(space.matrix());
+        }
+        Ok((
+            space,
+            if with_matrix {
+                self.matrix.as_ref()
+            } else {
+                None
+            },
+        ))
+    }
+    fn space(&mut self) -> WasmResult<&Space> {
+        Ok(self.prepared(false)?.0)
+    }
+    fn matrix(&mut self) -> WasmResult<&DistanceMatrix> {
+        Ok(self.prepared(true)?.1.expect("asked for the matrix"))
+    }
+    /// Add a descriptor after checking it fits the set's parameters.
+    fn push(&mut self, d: Descriptor) -> WasmResult<usize> {
+        d.validate().map_err(js_err)?;
+        if d.rows != self.params.rows() || d.cols != self.params.cols() {
+            return Err(JsError::new(&format!(
+                "mismatch: descriptor is {}x{}, the set's parameters make {}x{}",
+                d.rows,
+                d.cols,
+                self.params.rows(),
+                self.params.cols()
+            )));
+        }
+        self.descriptors.push(d);
+        self.space = None;
+        self.matrix = None;
+        Ok(self.descriptors.len() - 1)
     }
     fn check_nonempty(&self) -> WasmResult<()> {
         if self.descriptors.is_empty() {
@@ -224,6 +259,7 @@ impl DescriptorSet {
         Ok(DescriptorSet {
             params: params_from_js(params, preset.as_deref())?,
             descriptors: Vec::new(),
+            space: None,
             matrix: None,
         })
     }
@@ -232,24 +268,11 @@ impl DescriptorSet {
     pub fn add_json(&mut self, json: &str) -> WasmResult<usize> {
         let d: Descriptor = serde_json::from_str(json)
             .map_err(|e| JsError::new(&format!("descriptor JSON: {e}")))?;
-        d.validate().map_err(js_err)?;
-        if d.rows != self.params.rows() || d.cols != self.params.cols() {
-            return Err(JsError::new(&format!(
-                "mismatch: descriptor is {}x{}, the set's parameters make {}x{}",
-                d.rows,
-                d.cols,
-                self.params.rows(),
-                self.params.cols()
-            )));
-        }
-        self.descriptors.push(d);
-        self.matrix = None;
-        Ok(self.descriptors.len() - 1)
+        self.push(d)
     }
     /// Add a described scan; returns its index.
     pub fn add(&mut self, scan: &DescribedScan) -> WasmResult<usize> {
-        let json = scan.descriptor_json()?;
-        self.add_json(&json)
+        self.push(scan.descriptor.clone())
     }
     #[wasm_bindgen(getter)]
     pub fn length(&self) -> usize {
@@ -260,15 +283,14 @@ impl DescriptorSet {
         to_js(&self.params)
     }
     /// Delta between items i and j.
-    pub fn delta(&self, i: usize, j: usize) -> WasmResult<f32> {
-        let (a, b) = (self.descriptors.get(i), self.descriptors.get(j));
-        match (a, b) {
-            (Some(a), Some(b)) => crate::delta(a, b, self.opts()).map_err(js_err),
-            _ => Err(JsError::new(&format!(
-                "invalid parameter: index out of range (set has {})",
-                self.descriptors.len()
-            ))),
+    pub fn delta(&mut self, i: usize, j: usize) -> WasmResult<f32> {
+        let n = self.descriptors.len();
+        if i >= n || j >= n {
+            return Err(JsError::new(&format!(
+                "invalid parameter: index out of range (set has {n})"
+            )));
         }
+        Ok(self.space()?.delta(i, j))
     }
     /// The full Delta matrix, n x n row-major (computed once, then cached).
     #[wasm_bindgen(js_name = deltaMatrix)]
@@ -277,11 +299,11 @@ impl DescriptorSet {
     }
     /// k-means: `seeding` is `random`, `stride` or `plusplus`. Returns
     /// `{labels, seeds, iterations, converged, cost}`.
-    pub fn kmeans(&self, k: usize, seeding: &str, seed: u32) -> WasmResult<JsValue> {
+    pub fn kmeans(&mut self, k: usize, seeding: &str, seed: u32) -> WasmResult<JsValue> {
         self.check_nonempty()?;
         let s: Seeding = seeding.parse().map_err(js_err)?;
         let r = KMeans::fit(
-            &self.space()?,
+            self.space()?,
             &KMeansParams::new(k).seeding(s).seed(seed.into()),
         )
         .map_err(js_err)?;
@@ -290,9 +312,9 @@ impl DescriptorSet {
     /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
     pub fn kmedoids(&mut self, k: usize, seed: u32) -> WasmResult<JsValue> {
         self.check_nonempty()?;
-        let space = self.space()?;
-        let m = self.matrix()?;
-        let (labels, medoids) = KMedoids::fit(&space, m, k, seed.into(), 100).map_err(js_err)?;
+        let (space, m) = self.prepared(true)?;
+        let m = m.expect("asked for the matrix");
+        let (labels, medoids) = KMedoids::fit(space, m, k, seed.into(), 100).map_err(js_err)?;
         to_js(&serde_json::json!({ "labels": labels, "medoids": medoids }))
     }
     /// DBSCAN (Delta <= eps are neighbours; minPoints counts the scan itself).
@@ -308,13 +330,11 @@ impl DescriptorSet {
     /// bound of the diameter.
     pub fn hkmeans(&mut self, seed: u32) -> WasmResult<ClusterTree> {
         self.check_nonempty()?;
-        let space = self.space()?;
         let params = HkMeansParams::new(seed.into());
-        let tree = if self.uses_matrix() {
-            let m = self.matrix()?;
-            HierarchicalKMeans::fit(&space, m, &params)
-        } else {
-            HierarchicalKMeans::fit_without_matrix(&space, &params)
+        let with_matrix = self.uses_matrix();
+        let tree = match self.prepared(with_matrix)? {
+            (space, Some(m)) => HierarchicalKMeans::fit(space, m, &params),
+            (space, None) => HierarchicalKMeans::fit_without_matrix(space, &params),
         };
         Ok(ClusterTree {
             tree: tree.map_err(js_err)?,
@@ -332,7 +352,7 @@ impl DescriptorSet {
     }
     /// The most central scan of each category: flat pairs
     /// `[label0, index0, label1, index1, ...]` (sampled above 64 members).
-    pub fn medoids(&self, labels: &[i32]) -> WasmResult<js_sys::Int32Array> {
+    pub fn medoids(&mut self, labels: &[i32]) -> WasmResult<js_sys::Int32Array> {
         if labels.len() != self.descriptors.len() {
             return Err(JsError::new(&format!(
                 "mismatch: {} labels for {} scans",
@@ -340,7 +360,7 @@ impl DescriptorSet {
                 self.descriptors.len()
             )));
         }
-        let flat: Vec<i32> = cluster::medoids(&self.space()?, labels, 64, 0)
+        let flat: Vec<i32> = cluster::medoids(self.space()?, labels, 64, 0)
             .into_iter()
             .flat_map(|(l, i)| [l, i as i32])
             .collect();

@@ -222,6 +222,8 @@ function cluster() {
   try {
     if (method === 'hkmeans') {
       state.tree = state.set.hkmeans(Number($('hk-seed').value) >>> 0);
+      // Fetched once per tree: every threshold drag re-renders with them.
+      state.treeNodes = state.tree.nodes();
       let t = Number($('threshold').value);
       if ($('threshold').value === '' || !(t >= 0)) t = state.tree.cutK(Math.min(5, n)).threshold;
       return setThreshold(t);
@@ -283,7 +285,7 @@ function render() {
   state.colourIdx = colourIdx;
   renderLegend();
   if (state.tree) {
-    const nodes = state.tree.nodes();
+    const nodes = state.treeNodes;
     // Category order of the dendrogram = order of the cut nodes; map to ours.
     const central = state.cutNodes.map((node) => {
       const l = state.labels[nodes[node].members[0]];

@@ -42,6 +42,12 @@ impl Space {
             .unwrap_or((0, 0))
     }
 
+    /// The full Delta matrix of the items (parallel natively), from the
+    /// descriptors already prepared here.
+    pub fn matrix(&self) -> crate::distance::DistanceMatrix {
+        crate::distance::DistanceMatrix::from_fn(self.len(), |i, j| self.delta(i, j))
+    }
+
     /// Delta between items i and j.
     pub fn delta(&self, i: usize, j: usize) -> f32 {
         crate::distance::delta_prepared(&self.items[i], &self.items[j], self.metric)

@@ -13,12 +13,13 @@ struct Placement {
     band: usize,
 }
 
-/// Build one count matrix (row-major, rows x cols) per rotation.
+/// Build one count matrix (row-major, rows x cols) per rotation; also
+/// returns how many voxels fall in at least one range interval.
 pub fn histograms(
     cells: &[ShapedCell],
     rotations: &[Rotation],
     params: &DescriptorParams,
-) -> Vec<Vec<u32>> {
+) -> (Vec<Vec<u32>>, usize) {
     let ns = params.spherical_classes;
     let np = params.planar_classes;
     let nl = params.linear_classes;
@@ -48,7 +49,8 @@ pub fn histograms(
         })
         .collect();
 
-    rotations
+    let in_range = placements.iter().filter(|p| !p.cols.is_empty()).count();
+    let matrices = rotations
         .iter()
         .map(|rot| {
             let mut f = vec![0u32; params.rows() * cols];
@@ -75,5 +77,6 @@ pub fn histograms(
             }
             f
         })
-        .collect()
+        .collect();
+    (matrices, in_range)
 }

@@ -102,18 +102,9 @@ pub fn describe(points: &[[f32; 3]], params: &DescriptorParams) -> Result<Descri
         }
     }
     let rotations = alignment::candidates(&cells, params);
-    let matrices = histogram::histograms(&cells, &rotations, params);
+    let (matrices, in_range) = histogram::histograms(&cells, &rotations, params);
     let total: u64 = matrices[0].iter().map(|&v| v as u64).sum();
-    summary.in_range = cells
-        .iter()
-        .filter(|c| {
-            let r = (c.mean[0].powi(2) + c.mean[1].powi(2) + c.mean[2].powi(2)).sqrt();
-            params
-                .ranges
-                .iter()
-                .any(|(lo, hi)| r >= *lo && hi.is_none_or(|h| r < h))
-        })
-        .count();
+    summary.in_range = in_range;
     summary.alignments = matrices.len();
     summary.unreliable = summary.in_range < params.min_voxels;
     if total == 0 {

@@ -73,13 +73,13 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
         }
         "kmedoids" => {
             let k = need(a.k, "--k", "kmedoids")?;
-            let m = placecat::delta_matrix(&ds, opts)?;
+            let m = space.matrix();
             let (labels, medoids) = KMedoids::fit(&space, &m, k, a.seed, 100)?;
             out["labels"] = json!(labels);
             out["medoids"] = json!(medoids.iter().map(|&i| files[i]).collect::<Vec<_>>());
         }
         "hkmeans" => {
-            let m = placecat::delta_matrix(&ds, opts)?;
+            let m = space.matrix();
             let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(a.seed))?;
             let cut = match (a.threshold, a.categories) {
                 (Some(t), None) => tree.cut(t)?,
@@ -103,7 +103,7 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
         "dbscan" => {
             let eps = need(a.eps, "--eps", "dbscan")?;
             let c = need(a.min_points, "--min-points", "dbscan")?;
-            let m = placecat::delta_matrix(&ds, opts)?;
+            let m = space.matrix();
             let labels = Dbscan::fit(&m, &DbscanParams::new(eps, c))?;
             out["noise"] = json!(labels.iter().filter(|&&l| l < 0).count());
             out["labels"] = json!(labels);
