@@ -85,10 +85,9 @@ await app.waitForFunction(() => Number(document.body.dataset.runs || 0) >= 1, nu
 const seconds = (Date.now() - t0) / 1000;
 clearInterval(sampler);
 const status = await app.textContent('#cluster-status');
-const points = await app.evaluate(() => 0);
 results.pool = { scans: files.length, seconds, status, peakMainHeapBytes: peakHeap, peakChromiumRssBytes: peakRss, baselineRssBytes: baseRss };
 await app.screenshot({ path: join(ART, 'bench-pool.png') });
-console.log('pool', results.pool, points);
+console.log('pool', results.pool);
 await browser.close();
 server.close();
 

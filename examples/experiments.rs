@@ -15,7 +15,6 @@ use placecat::*;
 use std::fmt::Write;
 
 struct Set {
-    names: Vec<String>,
     truth: Vec<String>,
     descriptors: Vec<Descriptor>,
 }
@@ -23,14 +22,12 @@ struct Set {
 fn simulate(scene: SceneKind, seed: u64, params: &DescriptorParams) -> Set {
     let sim = Simulation::new(&SimParams::new(scene, seed)).unwrap();
     let mut set = Set {
-        names: vec![],
         truth: vec![],
         descriptors: vec![],
     };
     for i in 0..sim.len() {
         let s = sim.scan(i);
         set.descriptors.push(describe(&s.points, params).unwrap());
-        set.names.push(s.name);
         set.truth.push(s.label);
     }
     set
@@ -38,7 +35,6 @@ fn simulate(scene: SceneKind, seed: u64, params: &DescriptorParams) -> Set {
 
 fn describe_set(scans: &[(String, String, Vec<[f32; 3]>)], params: &DescriptorParams) -> Set {
     Set {
-        names: scans.iter().map(|s| s.0.clone()).collect(),
         truth: scans.iter().map(|s| s.1.clone()).collect(),
         descriptors: scans
             .iter()

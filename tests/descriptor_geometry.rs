@@ -161,8 +161,7 @@ fn check_rotation_invariance(r: [[f64; 3]; 3], alignment: Alignment) {
 
 #[test]
 fn rotation_about_z_keeps_delta_small() {
-    for (i, angle) in [0.3, 1.1, 2.5, -2.0].into_iter().enumerate() {
-        let _ = i;
+    for angle in [0.3, 1.1, 2.5, -2.0] {
         check_rotation_invariance(rotation([0.0, 0.0, 1.0], angle), Alignment::Paper);
         check_rotation_invariance(rotation([0.0, 0.0, 1.0], angle), Alignment::Yaw);
     }

@@ -2,7 +2,7 @@
 //! must equal tests/fixtures/parity.json, which the wasm tests check too.
 //! Regenerate the fixture with PLACECAT_WRITE_FIXTURES=1 cargo test --test parity.
 
-include!("parity_case.rs");
+include!("common/parity_case.rs");
 
 #[test]
 fn native_labels_match_the_shared_fixture() {

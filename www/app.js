@@ -81,13 +81,13 @@ async function loadFiles(list) {
     else if (isPoses(f.name)) await loadPoses(f.file, f.name);
   }
   if (scans.length === 0) {
-    if (others.length === 0 || list.some((f) => !isTruth(f.name) && !isPoses(f.name))) {
-      addError('input', 'no PLY, PCD or .bin scans among the files');
-    }
+    // Only a poses file or labels.csv is fine (they apply to the scans shown).
+    if (others.some((f) => !isTruth(f.name) && !isPoses(f.name))) addError('input', 'no PLY, PCD or .bin scans among the files');
     if (state.scans.length) render();
     return;
   }
   state.datasetId = datasetId(scans.map((s) => baseName(s.name)));
+  state.demo = null;
   state.inputs = scans.map((s) => ({ name: baseName(s.name), file: s.file }));
   await describeAll();
 }
@@ -122,6 +122,7 @@ function startDemo(scene) {
   state.poses = null;
   state.truth = null;
   state.datasetId = `demo-${scene}-${seed}-${scans}`;
+  state.demo = scene;
   state.inputs = [];
   const total = scene === 'indoor' ? scans * 5 : scans;
   for (let i = 0; i < total; i++) state.inputs.push({ name: `scan_${String(i).padStart(5, '0')}.ply`, sim: { scene, seed, scans, index: i } });
@@ -159,7 +160,7 @@ async function describeAll() {
     $('progress-text').textContent = `${done} / ${total} scans, ${rate.toFixed(1)} scans/s, ${left.toFixed(0)} s left`;
   };
   tick();
-  const session = beginSession(state.datasetId, { total, preset: $('preset').value, params });
+  const session = beginSession(state.datasetId, { total, preset: $('preset').value, params, demo: state.demo });
   const jobs = state.inputs.map((input, i) => {
     const task = input.sim
       ? { type: 'simulate', ...input.sim, params }
@@ -293,7 +294,7 @@ function render() {
       return state.scans[c.medoid].preview;
     });
     const reorder = state.cutNodes.map((node) => index.get(state.labels[nodes[node].members[0]]));
-    dendrogram.set({ nodes, rootHeight: state.tree.rootHeight(), threshold: Number($('threshold').value), cutNodes: state.cutNodes, central, names: [] });
+    dendrogram.set({ nodes, rootHeight: state.tree.rootHeight(), threshold: Number($('threshold').value), cutNodes: state.cutNodes, central });
     dendrogram.catIndex = reorder;
   } else {
     dendrogram.data = null;
@@ -315,7 +316,7 @@ function render() {
 function attachPoses() {
   // Demo scans carry their simulated poses; the indoor demo's rooms are
   // separate places, so it gets the strip instead of a map.
-  if (state.datasetId.startsWith('demo-')) return state.datasetId.startsWith('demo-outdoor');
+  if (state.demo) return state.demo === 'outdoor';
   const p = state.poses;
   if (!p) return false;
   const byName = new Map(p.poses.filter((q) => q.name).map((q) => [baseName(q.name), q]));
@@ -518,6 +519,7 @@ async function restore() {
   state.datasetId = last.datasetId;
   state.anchors = loadNames(last.datasetId);
   state.params = last.params;
+  state.demo = last.demo ?? null;
   if (last.preset) $('preset').value = last.preset;
   showPreset();
   state.scans = last.scans.map((s) => ({ ...s }));

@@ -60,7 +60,7 @@ export class Dendrogram {
    * nodes: the tree's nodes; cutNodes: the tree node of each category;
    * central: per category, the preview points of its most central scan.
    */
-  set({ nodes, rootHeight, threshold, cutNodes, central, names }) {
+  set({ nodes, rootHeight, threshold, cutNodes, central }) {
     const leaves = [];
     const stack = [0];
     while (stack.length) {
@@ -104,7 +104,7 @@ export class Dendrogram {
       }
       spans.push([lo, hi]);
     });
-    this.data = { nodes, x, cat, spans, step, rootHeight, threshold, top: Math.max(rootHeight * 1.05, 1e-6), central, names, cutNodes };
+    this.data = { nodes, x, cat, spans, step, rootHeight, threshold, top: Math.max(rootHeight * 1.05, 1e-6), central, cutNodes };
     this.draw();
   }
 

@@ -48,17 +48,10 @@ export class TrajectoryMap {
   }
 
   /** scans: [{name, pose?, preview}], labels: Int32Array-like. */
-  set({ scans, labels, names, usePoses }) {
-    this.data = { scans, labels, names, usePoses };
+  set({ scans, labels, usePoses }) {
+    this.data = { scans, labels, usePoses };
     this.selected = -1;
     this.#fit();
-    this.draw();
-  }
-
-  setLabels(labels, names) {
-    if (!this.data) return;
-    this.data.labels = labels;
-    this.data.names = names;
     this.draw();
   }
 

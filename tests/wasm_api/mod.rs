@@ -6,7 +6,7 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 
-include!("../parity_case.rs");
+include!("../common/parity_case.rs");
 
 fn message(e: JsError) -> String {
     let v: JsValue = e.into();

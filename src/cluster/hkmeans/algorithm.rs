@@ -85,6 +85,19 @@ fn height(
     ((2.0 * r).min(parent), far, other)
 }
 
+/// Members for which `goes_left(position, member)` holds, and the rest.
+fn split(members: &[usize], goes_left: impl Fn(usize, usize) -> bool) -> (Vec<usize>, Vec<usize>) {
+    let (mut left, mut right) = (Vec::new(), Vec::new());
+    for (p, &m) in members.iter().enumerate() {
+        if goes_left(p, m) {
+            left.push(m);
+        } else {
+            right.push(m);
+        }
+    }
+    (left, right)
+}
+
 /// A node still to build: its members and (parent index, child slot).
 type Pending = (Vec<usize>, Option<(usize, usize)>);
 
@@ -121,31 +134,12 @@ fn build(
             params.max_iterations,
             r,
         );
-        let mut left: Vec<usize> = members
-            .iter()
-            .zip(&labels)
-            .filter(|(_, &l)| l == 0)
-            .map(|(&m, _)| m)
-            .collect();
-        let mut right: Vec<usize> = members
-            .iter()
-            .zip(&labels)
-            .filter(|(_, &l)| l == 1)
-            .map(|(&m, _)| m)
-            .collect();
+        let (mut left, mut right) = split(&members, |p, _| labels[p] == 0);
         if left.is_empty() || right.is_empty() {
             // 2-means could not split (e.g. ties): split around the two
             // scans that make the diameter, so the tree always deepens.
-            left.clear();
-            right.clear();
             let d = |i: usize, j: usize| matrix.map_or_else(|| space.delta(i, j), |m| m.get(i, j));
-            for &m in &members {
-                if d(m, far_a) <= d(m, far_b) {
-                    left.push(m);
-                } else {
-                    right.push(m);
-                }
-            }
+            (left, right) = split(&members, |_, m| d(m, far_a) <= d(m, far_b));
         }
         // Push right first so the left child is built (and numbered) first.
         stack.push((right, Some((id, 1))));
