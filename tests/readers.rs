@@ -252,7 +252,7 @@ fn truncated_bodies_are_errors_naming_the_file() {
         let cut = &bytes[..bytes.len() - 100];
         let e = err_of(cut, name);
         assert!(
-            e.starts_with(name) && e.contains("truncated") || e.contains("not a whole number"),
+            e.starts_with(name) && (e.contains("truncated") || e.contains("not a whole number")),
             "{e}"
         );
     }
