@@ -525,13 +525,22 @@ pub struct Simulator {
 #[wasm_bindgen]
 impl Simulator {
     /// `scene`: `indoor`, `warehouse` or `outdoor`; `scans`: per kind for
-    /// indoor, along the path otherwise.
+    /// indoor, along the path otherwise; `buildings` (indoor): `one` (the
+    /// default: rooms of a kind share a plan) or `many`.
     #[wasm_bindgen(constructor)]
-    pub fn new(scene: &str, seed: u32, scans: Option<usize>) -> WasmResult<Simulator> {
+    pub fn new(
+        scene: &str,
+        seed: u32,
+        scans: Option<usize>,
+        buildings: Option<String>,
+    ) -> WasmResult<Simulator> {
         let kind: sim::SceneKind = scene.parse().map_err(js_err)?;
         let mut p = sim::SimParams::new(kind, seed.into());
         if let Some(n) = scans {
             p.scans = n;
+        }
+        if let Some(b) = buildings {
+            p.buildings = b.parse().map_err(js_err)?;
         }
         Ok(Simulator {
             sim: sim::Simulation::new(&p).map_err(js_err)?,

@@ -315,3 +315,39 @@ fn simulate_describe_cluster_evaluate_round_trip() {
         assert!(e.contains(want), "{args:?}: {e}");
     }
 }
+
+#[test]
+fn simulate_rooms_from_one_or_many_buildings() {
+    let dir = tmp("buildings");
+    let first_scan = |buildings: &str| {
+        let sim = dir.join(buildings);
+        let out = placecat()
+            .args([
+                "simulate", "--scene", "indoor", "--seed", "2", "--scans", "1",
+            ])
+            .args(["--buildings", buildings, "-o"])
+            .arg(&sim)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        std::fs::read(sim.join("scan_00000.ply")).unwrap()
+    };
+    // Same seed, rooms drawn differently: a different first scan (of the
+    // same length: in a closed room only dropouts lose rays).
+    assert_ne!(first_scan("one"), first_scan("many"));
+    let out = placecat()
+        .args(["simulate", "--scene", "indoor", "--buildings", "few", "-o"])
+        .arg(dir.join("few"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("\"few\"") && err.contains("one, many"),
+        "{err}"
+    );
+}

@@ -160,18 +160,17 @@ fn sector_index(shapes: &[&Shape], position: [f64; 3]) -> Vec<Vec<usize>> {
                 let dist = (dx * dx + dy * dy).sqrt();
                 (dist > radius + 1e-3).then(|| (dy.atan2(dx), (radius / dist).asin()))
             }
-            Shape::Cuboid { min, max } => {
+            Shape::Cuboid { .. } | Shape::OrientedBox { .. } => {
+                let corners = s.footprint_corners().expect("box-like");
                 if s.horizontal_distance(px, py) < 1e-3 {
                     None
                 } else {
-                    let c = ((min[1] + max[1]) / 2.0 - py).atan2((min[0] + max[0]) / 2.0 - px);
+                    let (cx, cy) = corners
+                        .iter()
+                        .fold((0.0, 0.0), |(a, b), p| (a + p[0] / 4.0, b + p[1] / 4.0));
+                    let c = (cy - py).atan2(cx - px);
                     let (mut lo, mut hi) = (0f64, 0f64);
-                    for (x, y) in [
-                        (min[0], min[1]),
-                        (min[0], max[1]),
-                        (max[0], min[1]),
-                        (max[0], max[1]),
-                    ] {
+                    for [x, y] in corners {
                         let a = ((y - py).atan2(x - px) - c + PI).rem_euclid(TAU) - PI;
                         lo = lo.min(a);
                         hi = hi.max(a);

@@ -54,6 +54,34 @@ pub struct SimParams {
     pub scans_per_room: usize,
     /// None: the scene's default sensor.
     pub lidar: Option<LidarParams>,
+    /// Indoor: where the rooms come from.
+    #[serde(default)]
+    pub buildings: Buildings,
+}
+
+/// Where the simulated indoor rooms come from.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Buildings {
+    /// A survey of one building, as KyushuIndoor is: the rooms of a kind
+    /// are built to one plan (sides within +-10 % of it) and differ in
+    /// their furniture and where the sensor stands.
+    #[default]
+    One,
+    /// Every room drawn afresh over its kind's whole size range, as if each
+    /// came from another building: a harder set.
+    Many,
+}
+
+impl std::str::FromStr for Buildings {
+    type Err = crate::Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "one" => Ok(Buildings::One),
+            "many" => Ok(Buildings::Many),
+            other => invalid(format!("unknown buildings {other:?} (one, many)")),
+        }
+    }
 }
 
 impl SimParams {
@@ -64,6 +92,7 @@ impl SimParams {
             scans: if scene == SceneKind::Indoor { 40 } else { 150 },
             scans_per_room: 5,
             lidar: None,
+            buildings: Buildings::One,
         }
     }
 
@@ -122,9 +151,14 @@ impl Simulation {
         match params.scene {
             SceneKind::Indoor => {
                 for kind in scenes::INDOOR_KINDS {
+                    let plan = scenes::room_size(kind, &mut r);
                     let mut left = params.scans;
                     while left > 0 {
-                        let room = scenes::indoor_room(kind, &mut r);
+                        let size = match params.buildings {
+                            Buildings::One => scenes::room_from_plan(plan, &mut r),
+                            Buildings::Many => scenes::room_size(kind, &mut r),
+                        };
+                        let room = scenes::indoor_room(kind, size, &mut r);
                         let take = left.min(params.scans_per_room);
                         for _ in 0..take {
                             let margin = if kind == "corridor" { 0.7 } else { 0.6 };

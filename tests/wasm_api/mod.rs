@@ -88,7 +88,7 @@ fn describe_real_bytes_and_cluster_through_the_api() {
 
 #[wasm_bindgen_test]
 fn simulated_demo_model_round_trip_and_classify() {
-    let sim = Simulator::new("indoor", 4, Some(2)).unwrap();
+    let sim = Simulator::new("indoor", 4, Some(2), None).unwrap();
     assert_eq!(sim.length(), 10);
     let mut set = DescriptorSet::new(JsValue::UNDEFINED, None).unwrap();
     let mut truth = Vec::new();
@@ -159,7 +159,13 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(message(set.kmeans(2, "sideways", 0).err().unwrap()).contains("sideways"));
     assert!(message(set.dbscan(-1.0, 2).err().unwrap()).contains("epsilon"));
     assert!(message(Model::from_json("{\"format\": 1}").err().unwrap()).starts_with("model:"));
-    assert!(message(Simulator::new("moon", 0, None).err().unwrap()).contains("moon"));
+    assert!(message(Simulator::new("moon", 0, None, None).err().unwrap()).contains("moon"));
+    let e = message(
+        Simulator::new("indoor", 0, None, Some("few".into()))
+            .err()
+            .unwrap(),
+    );
+    assert!(e.contains("few") && e.contains("one, many"), "{e}");
     // Still usable after the errors.
     assert_eq!(labels_of(&set.kmeans(2, "stride", 0).unwrap()).len(), 6);
 }

@@ -8,7 +8,7 @@
 //! - `placecat cluster DESCRIPTORS.json --method hkmeans (--threshold T | --categories K) --seed S -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method dbscan --eps E --min-points C -o OUT.json`
 //! - `placecat evaluate OUT.json --truth labels.csv`
-//! - `placecat simulate --scene indoor|warehouse|outdoor --seed S [--scans N] -o DIR`
+//! - `placecat simulate --scene indoor|warehouse|outdoor --seed S [--scans N] [--buildings one|many] -o DIR`
 
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;

@@ -172,9 +172,16 @@ pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-pub fn simulate(scene: &str, seed: u64, scans: Option<usize>, dir: &Path) -> Result<ExitCode> {
+pub fn simulate(
+    scene: &str,
+    seed: u64,
+    scans: Option<usize>,
+    buildings: &str,
+    dir: &Path,
+) -> Result<ExitCode> {
     let kind: SceneKind = scene.parse()?;
     let mut p = SimParams::new(kind, seed);
+    p.buildings = buildings.parse()?;
     if let Some(n) = scans {
         p.scans = n;
     }

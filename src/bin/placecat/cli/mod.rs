@@ -73,6 +73,11 @@ enum Command {
         /// indoor: scans per kind (default 40); others: scans along the path (default 150).
         #[arg(long)]
         scans: Option<usize>,
+        /// indoor: `one` building (rooms of a kind share a plan, the
+        /// default) or `many` (every room drawn over its kind's whole size
+        /// range; harder).
+        #[arg(long, default_value = "one")]
+        buildings: String,
         #[arg(short, long)]
         output: PathBuf,
     },
@@ -115,8 +120,9 @@ pub fn main() -> ExitCode {
             scene,
             seed,
             scans,
+            buildings,
             output,
-        } => cluster::simulate(&scene, seed, scans, &output),
+        } => cluster::simulate(&scene, seed, scans, &buildings, &output),
         Command::Distances {
             descriptors,
             output,
