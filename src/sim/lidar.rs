@@ -25,12 +25,14 @@ pub struct LidarParams {
 }
 
 impl LidarParams {
-    /// A 32-beam indoor sensor (~30k rays).
+    /// A 128-beam wide-angle indoor sensor like an Ouster OS0-128 (90
+    /// degrees vertical, ~131k rays): as dense as the real room scans in
+    /// ../shared/data/real (~112k points).
     pub fn indoor() -> Self {
         LidarParams {
-            beams: 32,
-            fov_down: -30.0,
-            fov_up: 30.0,
+            beams: 128,
+            fov_down: -45.0,
+            fov_up: 45.0,
             azimuth_steps: 1024,
             min_range: 0.3,
             max_range: 40.0,
