@@ -9,6 +9,7 @@
 
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
+use placecat::descriptor::{Metric, Normalisation};
 use placecat::eval::{dbscan_sweep, evaluate};
 use placecat::sim::{SceneKind, SimParams, Simulation};
 use placecat::*;
@@ -459,6 +460,27 @@ fn main() {
         "preset `indoor_bands`, seeds 1-10",
         seed_rows(&mut String::new(), &all, &one, &bands_p, false),
     );
+    // The distance options of DESIGN.md Sec. 2b, with the paper's counts.
+    for (name, metric, normalisation) in [
+        ("Hellinger", Metric::Hellinger, Normalisation::Total),
+        ("chi-squared", Metric::ChiSquared, Normalisation::Total),
+        (
+            "per-column normalisation",
+            Metric::Paper,
+            Normalisation::PerColumn,
+        ),
+    ] {
+        let p = DescriptorParams {
+            metric,
+            normalisation,
+            ..DescriptorParams::indoor()
+        };
+        row(
+            &mut out,
+            &format!("{name}, seeds 1-10"),
+            seed_rows(&mut String::new(), &all, &one, &p, false),
+        );
+    }
     // The first simulator's sensor: 32 beams over +-30 degrees.
     let sparse = SimParams {
         lidar: Some(placecat::sim::LidarParams {

