@@ -63,9 +63,9 @@ pub struct SimParams {
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Buildings {
-    /// A survey of one building, as KyushuIndoor is: the rooms of a kind
-    /// are built to one plan (sides within +-10 % of it) and differ in
-    /// their furniture and where the sensor stands.
+    /// A survey of one building: the rooms of a kind are built to one plan
+    /// (sides within +-10 % of it) and differ in their furniture and where
+    /// the sensor stands.
     #[default]
     One,
     /// Every room drawn afresh over its kind's whole size range, as if each
