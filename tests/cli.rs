@@ -3,10 +3,28 @@
 mod common;
 use common::*;
 use placecat::io::write::{self, PlyEncoding};
-use std::process::Command;
+use std::process::{Command, Output};
 
 fn placecat() -> Command {
     Command::new(env!("CARGO_BIN_EXE_placecat"))
+}
+
+/// Run `cmd` and require success; a failure shows the command and stderr.
+fn succeeds(cmd: &mut Command) -> Output {
+    let out = cmd.output().unwrap();
+    assert!(
+        out.status.success(),
+        "{cmd:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
+/// Run `cmd` and require failure; its stderr.
+fn fails(cmd: &mut Command) -> String {
+    let out = cmd.output().unwrap();
+    assert!(!out.status.success(), "{cmd:?} succeeded");
+    String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
 fn tmp(name: &str) -> std::path::PathBuf {
@@ -17,11 +35,8 @@ fn tmp(name: &str) -> std::path::PathBuf {
 
 #[test]
 fn info_json_on_the_real_pcd() {
-    let out = placecat()
-        .args(["info", &format!("{REAL}/pcl_room/room_scan1.pcd"), "--json"])
-        .output()
-        .unwrap();
-    assert!(out.status.success());
+    let out =
+        succeeds(placecat().args(["info", &format!("{REAL}/pcl_room/room_scan1.pcd"), "--json"]));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["count"], 112586);
     assert_eq!(v["format"], "pcd_binary_compressed");
@@ -59,17 +74,12 @@ fn describe_skips_bad_files_and_distances_write_csv() {
     .unwrap();
     std::fs::write(dir.join("notes.txt"), b"not a scan").unwrap();
     let out_json = dir.join("d.json");
-    let out = placecat()
-        .args(["describe", "--preset", "indoor"])
-        .arg(&dir)
-        .arg("-o")
-        .arg(&out_json)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let out = succeeds(
+        placecat()
+            .args(["describe", "--preset", "indoor"])
+            .arg(&dir)
+            .arg("-o")
+            .arg(&out_json),
     );
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
@@ -92,14 +102,13 @@ fn describe_skips_bad_files_and_distances_write_csv() {
     assert_eq!(v["params"]["preset"], "indoor");
 
     let csv_path = dir.join("d.csv");
-    let out = placecat()
-        .arg("distances")
-        .arg(&out_json)
-        .arg("-o")
-        .arg(&csv_path)
-        .output()
-        .unwrap();
-    assert!(out.status.success());
+    succeeds(
+        placecat()
+            .arg("distances")
+            .arg(&out_json)
+            .arg("-o")
+            .arg(&csv_path),
+    );
     let csv = std::fs::read_to_string(&csv_path).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], "file,a_office.ply,b_corridor.ply");
@@ -123,72 +132,62 @@ fn describe_with_params_file_and_all_failing_exits_nonzero() {
         write::ply(&office(3), PlyEncoding::BinaryBigEndian, true),
     )
     .unwrap();
-    let out = placecat()
-        .args(["describe", "--params"])
-        .arg(dir.join("p.json"))
-        .arg(dir.join("s.ply"))
-        .arg("-o")
-        .arg(dir.join("o.json"))
-        .output()
-        .unwrap();
-    assert!(out.status.success());
+    succeeds(
+        placecat()
+            .args(["describe", "--params"])
+            .arg(dir.join("p.json"))
+            .arg(dir.join("s.ply"))
+            .arg("-o")
+            .arg(dir.join("o.json")),
+    );
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("o.json")).unwrap()).unwrap();
     assert_eq!(v["params"]["voxel_size"], 0.5);
     assert_eq!(v["files"][0]["descriptor"]["rows"], 22);
 
     // A limit on points: the scan is refused with a clear error, the run fails.
-    let out = placecat()
-        .args(["describe", "--max-points", "1000"])
-        .arg(dir.join("s.ply"))
-        .arg("-o")
-        .arg(dir.join("l.json"))
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
-    let e = String::from_utf8_lossy(&out.stderr);
+    let e = fails(
+        placecat()
+            .args(["describe", "--max-points", "1000"])
+            .arg(dir.join("s.ply"))
+            .arg("-o")
+            .arg(dir.join("l.json")),
+    );
     assert!(
         e.contains("s.ply") && e.contains("more than the limit of 1000"),
         "{e}"
     );
 
     std::fs::write(dir.join("bad.bin"), [1u8, 2, 3]).unwrap();
-    let out = placecat()
-        .arg("describe")
-        .arg(dir.join("bad.bin"))
-        .arg("-o")
-        .arg(dir.join("x.json"))
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
+    fails(
+        placecat()
+            .arg("describe")
+            .arg(dir.join("bad.bin"))
+            .arg("-o")
+            .arg(dir.join("x.json")),
+    );
     std::fs::write(dir.join("q.json"), r#"{"voxel_sise": 0.5}"#).unwrap();
-    let out = placecat()
-        .args(["describe", "--params"])
-        .arg(dir.join("q.json"))
-        .arg(dir.join("s.ply"))
-        .arg("-o")
-        .arg(dir.join("y.json"))
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
-    assert!(String::from_utf8_lossy(&out.stderr).contains("voxel_sise"));
+    let e = fails(
+        placecat()
+            .args(["describe", "--params"])
+            .arg(dir.join("q.json"))
+            .arg(dir.join("s.ply"))
+            .arg("-o")
+            .arg(dir.join("y.json")),
+    );
+    assert!(e.contains("voxel_sise"), "{e}");
 }
 
 #[test]
 fn simulate_describe_cluster_evaluate_round_trip() {
     let dir = tmp("pipeline");
     let sim = dir.join("sim");
-    let out = placecat()
-        .args([
-            "simulate", "--scene", "indoor", "--seed", "5", "--scans", "3", "-o",
-        ])
-        .arg(&sim)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    succeeds(
+        placecat()
+            .args([
+                "simulate", "--scene", "indoor", "--seed", "5", "--scans", "3", "-o",
+            ])
+            .arg(&sim),
     );
     let labels = std::fs::read_to_string(sim.join("labels.csv")).unwrap();
     assert_eq!(labels.lines().count(), 16);
@@ -202,40 +201,23 @@ fn simulate_describe_cluster_evaluate_round_trip() {
     assert_eq!((kitti.poses.len(), tum.poses.len()), (15, 15));
 
     let d = dir.join("d.json");
-    assert!(placecat()
-        .arg("describe")
-        .arg(&sim)
-        .arg("-o")
-        .arg(&d)
-        .status()
-        .unwrap()
-        .success());
+    succeeds(placecat().arg("describe").arg(&sim).arg("-o").arg(&d));
     let run = |args: &[&str], name: &str| -> serde_json::Value {
         let o = dir.join(name);
-        let out = placecat()
-            .arg("cluster")
-            .arg(&d)
-            .args(args)
-            .arg("-o")
-            .arg(&o)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&out.stderr)
+        succeeds(
+            placecat()
+                .arg("cluster")
+                .arg(&d)
+                .args(args)
+                .arg("-o")
+                .arg(&o),
         );
-        let ev = placecat()
-            .arg("evaluate")
-            .arg(&o)
-            .arg("--truth")
-            .arg(sim.join("labels.csv"))
-            .output()
-            .unwrap();
-        assert!(
-            ev.status.success(),
-            "{}",
-            String::from_utf8_lossy(&ev.stderr)
+        let ev = succeeds(
+            placecat()
+                .arg("evaluate")
+                .arg(&o)
+                .arg("--truth")
+                .arg(sim.join("labels.csv")),
         );
         let v: serde_json::Value = serde_json::from_slice(&ev.stdout).unwrap();
         for key in ["accuracy", "ari", "score"] {
@@ -302,16 +284,14 @@ fn simulate_describe_cluster_evaluate_round_trip() {
         ),
         (&["--method", "hkmeans"][..], "exactly one of"),
     ] {
-        let out = placecat()
-            .arg("cluster")
-            .arg(&d)
-            .args(args)
-            .arg("-o")
-            .arg(dir.join("bad.json"))
-            .output()
-            .unwrap();
-        assert!(!out.status.success());
-        let e = String::from_utf8_lossy(&out.stderr);
+        let e = fails(
+            placecat()
+                .arg("cluster")
+                .arg(&d)
+                .args(args)
+                .arg("-o")
+                .arg(dir.join("bad.json")),
+        );
         assert!(e.contains(want), "{args:?}: {e}");
     }
 }
@@ -321,31 +301,24 @@ fn simulate_rooms_from_one_or_many_buildings() {
     let dir = tmp("buildings");
     let first_scan = |buildings: &str| {
         let sim = dir.join(buildings);
-        let out = placecat()
-            .args([
-                "simulate", "--scene", "indoor", "--seed", "2", "--scans", "1",
-            ])
-            .args(["--buildings", buildings, "-o"])
-            .arg(&sim)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
+        succeeds(
+            placecat()
+                .args([
+                    "simulate", "--scene", "indoor", "--seed", "2", "--scans", "1",
+                ])
+                .args(["--buildings", buildings, "-o"])
+                .arg(&sim),
         );
         std::fs::read(sim.join("scan_00000.ply")).unwrap()
     };
     // Same seed, rooms drawn differently: a different first scan (of the
     // same length: in a closed room only dropouts lose rays).
     assert_ne!(first_scan("one"), first_scan("many"));
-    let out = placecat()
-        .args(["simulate", "--scene", "indoor", "--buildings", "few", "-o"])
-        .arg(dir.join("few"))
-        .output()
-        .unwrap();
-    assert!(!out.status.success());
-    let err = String::from_utf8_lossy(&out.stderr);
+    let err = fails(
+        placecat()
+            .args(["simulate", "--scene", "indoor", "--buildings", "few", "-o"])
+            .arg(dir.join("few")),
+    );
     assert!(
         err.contains("\"few\"") && err.contains("one, many"),
         "{err}"
