@@ -256,14 +256,7 @@ fn paper_distance_below<const CHUNKS: usize>(
     let stride = if CHUNKS > 0 { 4 * CHUNKS } else { stride };
     let mut sum = 0f32;
     for (ca, cb) in a.chunks_exact(stride).zip(b.chunks_exact(stride)) {
-        let mut lanes = [0f32; 4];
-        for (x, y) in ca.chunks_exact(4).zip(cb.chunks_exact(4)) {
-            for k in 0..4 {
-                let d = x[k] - y[k];
-                lanes[k] += d * d;
-            }
-        }
-        sum += ((lanes[0] + lanes[2]) + (lanes[1] + lanes[3])).sqrt();
+        sum += squared_l2(ca, cb).sqrt();
         if sum >= bound {
             return sum;
         }
@@ -306,21 +299,22 @@ impl DistanceMatrix {
 
     /// Build from a function of (i, j), i < j, each pair computed once.
     pub fn from_fn(n: usize, f: impl Fn(usize, usize) -> f32 + Sync) -> DistanceMatrix {
-        let rows: Vec<Vec<f32>> = {
-            let row = |i: usize| ((i + 1)..n).map(|j| f(i, j)).collect::<Vec<f32>>();
-            #[cfg(not(target_arch = "wasm32"))]
-            {
-                use rayon::prelude::*;
-                (0..n).into_par_iter().map(row).collect()
-            }
-            #[cfg(target_arch = "wasm32")]
-            {
-                (0..n).map(row).collect()
+        // Each row's upper part is written in place (no row vectors to
+        // allocate and copy: 50 MB of them at n = 5,000).
+        let mut data = vec![0f32; n * n];
+        let fill = |(i, row): (usize, &mut [f32])| {
+            for (j, v) in row.iter_mut().enumerate().skip(i + 1) {
+                *v = f(i, j);
             }
         };
-        let mut data = vec![0f32; n * n];
-        for (i, r) in rows.into_iter().enumerate() {
-            data[i * n + i + 1..(i + 1) * n].copy_from_slice(&r);
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            use rayon::prelude::*;
+            data.par_chunks_mut(n.max(1)).enumerate().for_each(fill);
+        }
+        #[cfg(target_arch = "wasm32")]
+        {
+            data.chunks_mut(n.max(1)).enumerate().for_each(fill);
         }
         // Mirror into the lower triangle tile by tile: element by element,
         // every write would land in another cache line (0.1 s at n = 5,000).
