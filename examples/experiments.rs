@@ -68,17 +68,13 @@ fn run(set: &Set, params: &DescriptorParams, k: usize) -> Results {
         hk.push(evaluate(&set.truth, &tree.cut_k(k).unwrap().labels).unwrap());
         tree0.get_or_insert(tree);
     }
-    let n = m.n;
-    let nn = (0..n)
+    let nn = (0..m.n)
         .filter(|&i| {
-            let j = (0..n)
-                .filter(|&j| j != i)
-                .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)))
-                .unwrap();
-            set.truth[i] == set.truth[j]
+            m.nearest_other(i)
+                .is_some_and(|j| set.truth[i] == set.truth[j])
         })
         .count() as f64
-        / n as f64;
+        / m.n as f64;
     Results {
         stride: evaluate(&set.truth, &stride.labels).unwrap(),
         hk,
@@ -98,14 +94,14 @@ fn pct(x: f64) -> String {
     format!("{:.1}", 100.0 * x)
 }
 
-/// One row per simulator seed and a mean row: the indoor figures on data
-/// sets that no one chose.
+/// The indoor figures on data sets that no one chose: the mean over the
+/// simulator seeds of (deterministic k-means, hierarchical mean, 1-NN),
+/// with one table row per seed written to `rows` if given.
 fn seed_rows(
-    out: &mut String,
+    mut rows: Option<&mut String>,
     seeds: &[u64],
     base: &SimParams,
     params: &DescriptorParams,
-    every_row: bool,
 ) -> [f64; 3] {
     let mut sums = [0.0; 3];
     for &seed in seeds {
@@ -118,7 +114,7 @@ fn seed_rows(
         );
         let r = run(&set, params, 5);
         let (m, s) = mean_std(&r.hk.iter().map(|e| e.accuracy).collect::<Vec<_>>());
-        if every_row {
+        if let Some(out) = rows.as_deref_mut() {
             writeln!(
                 out,
                 "| {seed} | {} | {} ± {} | {} |",
@@ -136,57 +132,47 @@ fn seed_rows(
     sums
 }
 
-/// Largest Delta between members of `a` and of `b` (a == b: a diameter).
-fn union_diameter(m: &DistanceMatrix, truth: &[String], a: &str, b: &str) -> f32 {
-    let members: Vec<usize> = (0..truth.len())
-        .filter(|&i| truth[i] == a || truth[i] == b)
-        .collect();
-    let mut d = 0f32;
-    for &i in &members {
-        for &j in &members {
-            d = d.max(m.get(i, j));
-        }
-    }
-    d
-}
-
 /// Why a diameter cut can miss: a class wider than the union of two others
-/// is split before those two are told apart.
+/// is split before those two are told apart. `d[a][b]`: the largest Delta
+/// within classes a and b together (a == b: a's diameter).
 fn diameter_table(out: &mut String, m: &DistanceMatrix, truth: &[String]) {
     let mut classes: Vec<&str> = truth.iter().map(|s| s.as_str()).collect();
     classes.sort();
     classes.dedup();
-    writeln!(out, "| | {} |", classes.join(" | ")).unwrap();
-    writeln!(out, "|---|{}", "---|".repeat(classes.len())).unwrap();
-    for a in &classes {
-        let row: Vec<String> = classes
-            .iter()
-            .map(|b| format!("{:.2}", union_diameter(m, truth, a, b)))
-            .collect();
-        writeln!(out, "| {a} | {} |", row.join(" | ")).unwrap();
-    }
-    let widest = classes
+    let class: Vec<usize> = truth
         .iter()
-        .map(|a| (union_diameter(m, truth, a, a), *a))
-        .max_by(|x, y| x.0.total_cmp(&y.0))
-        .unwrap();
+        .map(|t| classes.iter().position(|c| c == t).unwrap())
+        .collect();
+    let k = classes.len();
+    // Largest Delta between a member of a and one of b, then unions.
+    let mut cross = vec![vec![0f32; k]; k];
+    for i in 0..m.n {
+        for j in 0..m.n {
+            let v = &mut cross[class[i]][class[j]];
+            *v = v.max(m.get(i, j));
+        }
+    }
+    let d = |a: usize, b: usize| cross[a][b].max(cross[a][a]).max(cross[b][b]);
+    writeln!(out, "| | {} |", classes.join(" | ")).unwrap();
+    writeln!(out, "|---|{}", "---|".repeat(k)).unwrap();
+    for (a, name) in classes.iter().enumerate() {
+        let row: Vec<String> = (0..k).map(|b| format!("{:.2}", d(a, b))).collect();
+        writeln!(out, "| {name} | {} |", row.join(" | ")).unwrap();
+    }
+    let widest = (0..k).max_by(|&x, &y| d(x, x).total_cmp(&d(y, y))).unwrap();
     let mut narrower = vec![];
-    for (i, a) in classes.iter().enumerate() {
-        for b in &classes[i + 1..] {
-            let d = union_diameter(m, truth, a, b);
-            if d < widest.0 {
-                narrower.push(format!("{a} + {b} ({d:.2})"));
+    for a in 0..k {
+        for b in a + 1..k {
+            if d(a, b) < d(widest, widest) {
+                narrower.push(format!("{} + {} ({:.2})", classes[a], classes[b], d(a, b)));
             }
         }
     }
     writeln!(
         out,
-        "
-The widest class is {} (diameter {:.2}). Pairs of classes whose union is narrower, so that any threshold keeping {} whole also merges them: {}.
-",
-        widest.1,
-        widest.0,
-        widest.1,
+        "\nThe widest class is {0} (diameter {1:.2}). Pairs of classes whose union is narrower, so that any threshold keeping {0} whole also merges them: {2}.\n",
+        classes[widest],
+        d(widest, widest),
         if narrower.is_empty() { "none".to_string() } else { narrower.join(", ") }
     )
     .unwrap();
@@ -321,13 +307,14 @@ fn dendrogram_svg(tree: &Tree, truth: &[String], cut: f32) -> String {
     }
     let (w, h, top) = (900.0, 320.0, 20.0);
     let hmax = z.last().map_or(1.0, |r| r[2]).max(1e-9);
-    let xs_of_leaf: std::collections::HashMap<usize, f64> = order
-        .iter()
-        .enumerate()
-        .map(|(i, &l)| (l, 40.0 + i as f64 * (w - 60.0) / n as f64))
-        .collect();
+    // x of each leaf, indexed by scan (a Vec, so the SVG is written in the
+    // same order every run).
+    let mut xs_of_leaf = vec![0f64; n];
+    for (i, &leaf) in order.iter().enumerate() {
+        xs_of_leaf[leaf] = 40.0 + i as f64 * (w - 60.0) / n as f64;
+    }
     let y = |hgt: f64| top + (1.0 - hgt / hmax) * (h - 60.0);
-    let mut pos: Vec<(f64, f64)> = (0..n).map(|i| (xs_of_leaf[&i], y(0.0))).collect();
+    let mut pos: Vec<(f64, f64)> = xs_of_leaf.iter().map(|&x| (x, y(0.0))).collect();
     let mut s = format!(
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="11">"#
     );
@@ -340,7 +327,7 @@ fn dendrogram_svg(tree: &Tree, truth: &[String], cut: f32) -> String {
         );
         pos.push(((a.0 + b.0) / 2.0, yy));
     }
-    for (&leaf, &x) in &xs_of_leaf {
+    for (leaf, &x) in xs_of_leaf.iter().enumerate() {
         let ci = classes.iter().position(|c| *c == truth[leaf]).unwrap_or(0);
         s += &format!(
             r#"<rect x="{}" y="{}" width="3" height="10" fill="{}"/>"#,
@@ -422,10 +409,10 @@ fn main() {
     // 1b. Over simulator seeds.
     writeln!(out, "## 1b. Indoor over simulator seeds\n\nThe same protocol on twenty simulated data sets (preset `indoor`). Seeds 1 to 5 were looked at while the simulator was developed. Seeds 6 to 10 were first run when the room kinds were fixed, with the 32-beam sensor; the sensor was changed after that. Seeds 11 to 20 were first run for this report, after the last change.\n\n| simulator seed | deterministic k-means | hierarchical k-means++ (10 seeds) | nearest neighbour |\n|---|---|---|---|").unwrap();
     let one = SimParams::new(SceneKind::Indoor, 1);
-    let dev = seed_rows(&mut out, &[1, 2, 3, 4, 5], &one, &indoor_p, true);
-    let seen = seed_rows(&mut out, &[6, 7, 8, 9, 10], &one, &indoor_p, true);
+    let dev = seed_rows(Some(&mut out), &[1, 2, 3, 4, 5], &one, &indoor_p);
+    let seen = seed_rows(Some(&mut out), &[6, 7, 8, 9, 10], &one, &indoor_p);
     let fresh: Vec<u64> = (11..=20).collect();
-    let held = seed_rows(&mut out, &fresh, &one, &indoor_p, true);
+    let held = seed_rows(Some(&mut out), &fresh, &one, &indoor_p);
     writeln!(out, "\n| data sets | deterministic k-means | hierarchical k-means++ | nearest neighbour |\n|---|---|---|---|").unwrap();
     let row = |out: &mut String, name: &str, v: [f64; 3]| {
         writeln!(
@@ -453,12 +440,12 @@ fn main() {
     row(
         &mut out,
         "`--buildings many`, seeds 1-10",
-        seed_rows(&mut String::new(), &all, &many, &indoor_p, false),
+        seed_rows(None, &all, &many, &indoor_p),
     );
     row(
         &mut out,
         "preset `indoor_bands`, seeds 1-10",
-        seed_rows(&mut String::new(), &all, &one, &bands_p, false),
+        seed_rows(None, &all, &one, &bands_p),
     );
     // The distance options of DESIGN.md Sec. 2b, with the paper's counts.
     for (name, metric, normalisation) in [
@@ -478,7 +465,7 @@ fn main() {
         row(
             &mut out,
             &format!("{name}, seeds 1-10"),
-            seed_rows(&mut String::new(), &all, &one, &p, false),
+            seed_rows(None, &all, &one, &p),
         );
     }
     // The first simulator's sensor: 32 beams over +-30 degrees.
@@ -494,7 +481,7 @@ fn main() {
     row(
         &mut out,
         "32-beam sensor (+-30 degrees), seeds 1-10",
-        seed_rows(&mut String::new(), &all, &sparse, &indoor_p, false),
+        seed_rows(None, &all, &sparse, &indoor_p),
     );
     writeln!(out).unwrap();
 

@@ -213,35 +213,39 @@ pub fn size_factor(ta: f32, tb: f32) -> f32 {
 /// and 0.95-1.05 s padded, in four lanes, unrolled (callgrind: half the
 /// instructions of four lanes on unpadded columns). Same values either way.
 pub fn delta_prepared(a: &Prepared, b: &Prepared, metric: Metric) -> f32 {
-    let mut best = f32::INFINITY;
-    if metric == Metric::Paper {
+    let best = if metric == Metric::Paper {
         // A fixed number of lanes lets the compiler unroll the columns of
         // the usual shapes (11 rows -> 3 chunks of 4).
-        let pairs = |f: fn(&[f32], &[f32], usize, f32) -> f32| {
-            let size = a.stride * a.cols;
-            let mut best = f32::INFINITY;
-            for fa in a.padded.chunks_exact(size) {
-                for fb in b.padded.chunks_exact(size) {
-                    best = best.min(f(fa, fb, a.stride, best));
-                }
-            }
-            best
-        };
-        best = match a.stride / 4 {
-            1 => pairs(paper_distance_below::<1>),
-            2 => pairs(paper_distance_below::<2>),
-            3 => pairs(paper_distance_below::<3>),
-            4 => pairs(paper_distance_below::<4>),
-            _ => pairs(paper_distance_below::<0>),
-        };
+        match a.stride / 4 {
+            1 => best_padded_pair::<1>(a, b),
+            2 => best_padded_pair::<2>(a, b),
+            3 => best_padded_pair::<3>(a, b),
+            4 => best_padded_pair::<4>(a, b),
+            _ => best_padded_pair::<0>(a, b),
+        }
     } else {
+        let mut best = f32::INFINITY;
         for fa in &a.matrices {
             for fb in &b.matrices {
                 best = best.min(matrix_distance_below(fa, fb, a.rows, a.cols, metric, best));
             }
         }
-    }
+        best
+    };
     best * size_factor(a.total, b.total)
+}
+
+/// The smallest Eq. 2 distance over candidate pairs, on the padded buffers.
+#[inline]
+fn best_padded_pair<const CHUNKS: usize>(a: &Prepared, b: &Prepared) -> f32 {
+    let size = a.stride * a.cols;
+    let mut best = f32::INFINITY;
+    for fa in a.padded.chunks_exact(size) {
+        for fb in b.padded.chunks_exact(size) {
+            best = best.min(paper_distance_below::<CHUNKS>(fa, fb, a.stride, best));
+        }
+    }
+    best
 }
 
 /// Eq. 2 before the size factor on padded matrices, stopping once it
@@ -295,6 +299,14 @@ impl DistanceMatrix {
     #[inline]
     pub fn get(&self, i: usize, j: usize) -> f32 {
         self.data[i * self.n + j]
+    }
+
+    /// The scan nearest to scan i other than itself (the first of equals);
+    /// None when there is no other scan.
+    pub fn nearest_other(&self, i: usize) -> Option<usize> {
+        (0..self.n)
+            .filter(|&j| j != i)
+            .min_by(|&a, &b| self.get(i, a).total_cmp(&self.get(i, b)))
     }
 
     /// Build from a function of (i, j), i < j, each pair computed once.
@@ -366,6 +378,19 @@ mod tests {
                 .collect(),
             summary: Default::default(),
         }
+    }
+
+    #[test]
+    fn nearest_other_skips_the_scan_itself() {
+        // Distances 0-1: 1.0, 0-2: 0.5, 1-2: 2.0.
+        let m = DistanceMatrix::from_fn(3, |i, j| [[0.0, 1.0, 0.5], [0.0, 0.0, 2.0]][i][j]);
+        assert_eq!(m.nearest_other(0), Some(2));
+        assert_eq!(m.nearest_other(1), Some(0));
+        assert_eq!(m.nearest_other(2), Some(0));
+        assert_eq!(
+            DistanceMatrix::from_fn(1, |_, _| 0.0).nearest_other(0),
+            None
+        );
     }
 
     /// The padded, unrolled path of `delta_prepared` must give exactly the

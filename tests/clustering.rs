@@ -134,7 +134,7 @@ fn seeds_give_identical_results_and_parameters_are_checked() {
     }
     let stride = KMeans::fit(&space, &KMeansParams::new(5).seeding(Seeding::Stride)).unwrap();
     assert_eq!(stride.seeds, vec![0, 4, 8, 12, 16]);
-    let m = delta_matrix(&ds, opts).unwrap();
+    let m = space.matrix();
     let t1 = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(3)).unwrap();
     let t2 = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(3)).unwrap();
     assert_eq!(t1, t2);
@@ -156,7 +156,7 @@ fn tree_heights_are_diameters_and_cuts_follow_the_threshold() {
     let (ds, _) = sim_set(4, 12);
     let opts = DistanceOptions::default();
     let space = Space::new(&ds, opts).unwrap();
-    let m = delta_matrix(&ds, opts).unwrap();
+    let m = space.matrix();
     let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(1)).unwrap();
     assert_eq!(tree.nodes[0].members.len(), 20);
     for node in &tree.nodes {
@@ -216,7 +216,7 @@ fn duplicate_scans_make_a_leaf_and_still_link() {
     ds.push(ds[0].clone());
     let opts = DistanceOptions::default();
     let space = Space::new(&ds, opts).unwrap();
-    let m = delta_matrix(&ds, opts).unwrap();
+    let m = space.matrix();
     let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(0)).unwrap();
     let z = tree.linkage();
     assert_eq!(z.len(), 5);
@@ -229,7 +229,7 @@ fn kmedoids_and_clusters_are_partitions() {
     let (ds, truth) = sim_set(4, 14);
     let opts = DistanceOptions::default();
     let space = Space::new(&ds, opts).unwrap();
-    let m = delta_matrix(&ds, opts).unwrap();
+    let m = space.matrix();
     let (labels, medoids) = KMedoids::fit(&space, &m, 5, 1, 50).unwrap();
     assert_eq!(medoids.len(), 5);
     for (c, &med) in medoids.iter().enumerate() {
@@ -244,7 +244,7 @@ fn without_the_matrix_small_trees_are_identical_and_large_ones_monotone() {
     let (ds, _) = sim_set(4, 15);
     let opts = DistanceOptions::default();
     let space = Space::new(&ds, opts).unwrap();
-    let m = delta_matrix(&ds, opts).unwrap();
+    let m = space.matrix();
     let with = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(2)).unwrap();
     let without = HierarchicalKMeans::fit_without_matrix(&space, &HkMeansParams::new(2)).unwrap();
     assert_eq!(with, without);
@@ -290,7 +290,7 @@ fn medoids_are_members_and_exact_for_small_categories() {
     let (ds, _) = sim_set(4, 16);
     let opts = DistanceOptions::default();
     let space = Space::new(&ds, opts).unwrap();
-    let m = delta_matrix(&ds, opts).unwrap();
+    let m = space.matrix();
     let labels = KMeans::fit(&space, &KMeansParams::new(4).seeding(Seeding::Stride))
         .unwrap()
         .labels;
@@ -318,13 +318,7 @@ fn simulated_indoor_kinds_are_told_apart_by_nearest_neighbour() {
     let (ds, truth) = sim_set(8, 11);
     let m = delta_matrix(&ds, DistanceOptions::default()).unwrap();
     let right = (0..m.n)
-        .filter(|&i| {
-            let j = (0..m.n)
-                .filter(|&j| j != i)
-                .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)))
-                .unwrap();
-            truth[i] == truth[j]
-        })
+        .filter(|&i| m.nearest_other(i).is_some_and(|j| truth[i] == truth[j]))
         .count();
     assert!(
         right >= 38,

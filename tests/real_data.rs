@@ -27,10 +27,7 @@ fn check(params: DescriptorParams) {
     let m = delta_matrix(&descriptors, DistanceOptions::from(&params)).unwrap();
     let mut wrong = Vec::new();
     for i in 0..rows.len() {
-        let nearest = (0..rows.len())
-            .filter(|&j| j != i)
-            .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)))
-            .unwrap();
+        let nearest = m.nearest_other(i).unwrap();
         if rows[nearest].1 != rows[i].1 {
             wrong.push(format!(
                 "{} -> {} ({})",

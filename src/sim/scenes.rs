@@ -45,14 +45,18 @@ impl Frame {
     fn at(x: f64, y: f64, yaw: f64) -> Frame {
         Frame { x, y, yaw }
     }
-    fn part(&self, out: &mut Vec<Shape>, centre: [f64; 2], size: [f64; 2], z0: f64, h: f64) {
+    /// A local point in room coordinates.
+    fn point(&self, local: [f64; 2]) -> [f64; 2] {
         let (s, c) = self.yaw.sin_cos();
+        [
+            self.x + c * local[0] - s * local[1],
+            self.y + s * local[0] + c * local[1],
+        ]
+    }
+    fn part(&self, out: &mut Vec<Shape>, centre: [f64; 2], size: [f64; 2], z0: f64, h: f64) {
+        let [x, y] = self.point(centre);
         out.push(Shape::OrientedBox {
-            centre: [
-                self.x + c * centre[0] - s * centre[1],
-                self.y + s * centre[0] + c * centre[1],
-                z0 + h / 2.0,
-            ],
+            centre: [x, y, z0 + h / 2.0],
             half: [size[0] / 2.0, size[1] / 2.0, h / 2.0],
             yaw: self.yaw,
         });
@@ -285,9 +289,9 @@ pub fn indoor_room(kind: &str, size: [f64; 3], r: &mut ChaCha8Rng) -> Room {
                     if r.random::<f64>() < 0.8 {
                         let x = -tl / 2.0 + 0.35 + i as f64 * 0.7 + u(r, -0.1, 0.1);
                         let y = side * (tw / 2.0 + u(r, 0.2, 0.45));
-                        let (s2, c2) = f.yaw.sin_cos();
                         let yaw = side * std::f64::consts::FRAC_PI_2 + u(r, -0.6, 0.6);
-                        chair(&mut s, f.x + c2 * x - s2 * y, f.y + s2 * x + c2 * y, yaw);
+                        let [cx, cy] = f.point([x, y]);
+                        chair(&mut s, cx, cy, yaw);
                     }
                 }
             }
