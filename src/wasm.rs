@@ -430,7 +430,9 @@ impl ClusterTree {
     pub fn cut(&self, threshold: f32) -> WasmResult<JsValue> {
         to_js(&self.tree.cut(threshold).map_err(js_err)?)
     }
-    /// The cut giving k categories.
+    /// The cut giving k categories: the tree's k - 1 highest splits (of two
+    /// splits at one height, the parent's first, which no threshold can
+    /// separate). Fewer only when the tree has fewer than k leaves.
     #[wasm_bindgen(js_name = cutK)]
     pub fn cut_k(&self, k: usize) -> WasmResult<JsValue> {
         to_js(&self.tree.cut_k(k).map_err(js_err)?)

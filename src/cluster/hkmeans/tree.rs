@@ -42,11 +42,52 @@ impl Tree {
         if !t.is_finite() || t < 0.0 {
             return invalid(format!("threshold must be a finite number >= 0, got {t}"));
         }
+        Ok(self.categories(t, |id| self.nodes[id].height > t))
+    }
+
+    /// The cut with `k` categories: the tree's k - 1 highest splits, a
+    /// parent's before its child's when both have one height (a child that
+    /// keeps its parent's diameter pair has the parent's diameter, and no
+    /// threshold separates the two splits; a threshold cut would jump from
+    /// k - 1 to k + 1 categories there). Every category's height is at most
+    /// the returned threshold. Fewer than k categories only when the tree
+    /// has fewer than k leaves.
+    pub fn cut_k(&self, k: usize) -> Result<Cut> {
+        crate::cluster::space::check_k(k, self.n)?;
+        // Depth from the root orders ties: a parent before its child.
+        let mut depth = vec![0usize; self.nodes.len()];
+        let mut stack = vec![0usize];
+        while let Some(id) = stack.pop() {
+            for &c in &self.nodes[id].children {
+                depth[c] = depth[id] + 1;
+                stack.push(c);
+            }
+        }
+        let mut order: Vec<usize> = (0..self.nodes.len())
+            .filter(|&id| !self.nodes[id].children.is_empty())
+            .collect();
+        order.sort_by(|&a, &b| {
+            let (ha, hb) = (self.nodes[a].height, self.nodes[b].height);
+            hb.total_cmp(&ha)
+                .then(depth[a].cmp(&depth[b]))
+                .then(a.cmp(&b))
+        });
+        let mut split = vec![false; self.nodes.len()];
+        for &id in order.iter().take(k - 1) {
+            split[id] = true;
+        }
+        // The highest split not made (0 when every split is made).
+        let t = order.get(k - 1).map_or(0.0, |&id| self.nodes[id].height);
+        Ok(self.categories(t, |id| split[id]))
+    }
+
+    /// Walk down from the root, splitting the internal nodes `split` picks.
+    fn categories(&self, t: f32, split: impl Fn(usize) -> bool) -> Cut {
         let mut cats = Vec::new();
         let mut stack = vec![0usize];
         while let Some(id) = stack.pop() {
             let node = &self.nodes[id];
-            if node.height <= t || node.children.is_empty() {
+            if node.children.is_empty() || !split(id) {
                 cats.push(id);
             } else {
                 stack.extend(node.children.iter().rev());
@@ -58,31 +99,11 @@ impl Tree {
                 labels[m] = c as i32;
             }
         }
-        Ok(Cut {
+        Cut {
             threshold: t,
             labels,
             nodes: cats,
-        })
-    }
-
-    /// The cut with `k` categories, or the nearest count the tree allows
-    /// (ties in heights can make some counts impossible).
-    pub fn cut_k(&self, k: usize) -> Result<Cut> {
-        crate::cluster::space::check_k(k, self.n)?;
-        let mut heights: Vec<f32> = self
-            .nodes
-            .iter()
-            .filter(|n| !n.children.is_empty())
-            .map(|n| n.height)
-            .collect();
-        heights.sort_by(|a, b| b.total_cmp(a));
-        // Cutting at the k-th largest internal height splits the k-1 above it.
-        let t = if k > heights.len() {
-            0.0
-        } else {
-            heights[k - 1]
-        };
-        self.cut(t)
+        }
     }
 
     /// Number of categories at threshold t.
@@ -178,5 +199,66 @@ impl Tree {
                 [a.min(b), a.max(b), g.height as f64, g.count as f64]
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn node(members: &[usize], height: f32, children: &[usize], parent: Option<usize>) -> TreeNode {
+        TreeNode {
+            members: members.to_vec(),
+            height,
+            children: children.to_vec(),
+            parent,
+        }
+    }
+
+    /// Scans 0..4. The root (height 2) splits off scan 0; its other child
+    /// keeps the root's diameter pair (scans 1 and 3), so it is as high as
+    /// the root. No threshold gives 2 or 3 categories; cut_k does.
+    fn tied() -> Tree {
+        Tree::new(
+            vec![
+                node(&[0, 1, 2, 3], 2.0, &[1, 2], None),
+                node(&[0], 0.0, &[], Some(0)),
+                node(&[1, 2, 3], 2.0, &[3, 4], Some(0)),
+                node(&[1], 0.0, &[], Some(2)),
+                node(&[2, 3], 1.0, &[5, 6], Some(2)),
+                node(&[2], 0.0, &[], Some(4)),
+                node(&[3], 0.0, &[], Some(4)),
+            ],
+            4,
+        )
+    }
+
+    #[test]
+    fn threshold_cuts_jump_over_tied_heights() {
+        let t = tied();
+        let counts: Vec<usize> = [2.5f32, 2.0, 1.999, 1.0, 0.999]
+            .iter()
+            .map(|&h| t.cut(h).unwrap().nodes.len())
+            .collect();
+        assert_eq!(counts, [1, 1, 3, 3, 4]);
+    }
+
+    #[test]
+    fn cut_k_splits_a_tied_parent_before_its_child() {
+        let t = tied();
+        let want: [&[i32]; 4] = [&[0, 0, 0, 0], &[0, 1, 1, 1], &[0, 1, 2, 2], &[0, 1, 2, 3]];
+        for (k, labels) in (1..=4).zip(want) {
+            let cut = t.cut_k(k).unwrap();
+            assert_eq!(cut.labels, labels, "k = {k}");
+            assert_eq!(cut.nodes.len(), k);
+            // Every category is no higher than the threshold reported.
+            assert!(cut
+                .nodes
+                .iter()
+                .all(|&id| t.nodes[id].height <= cut.threshold));
+        }
+        assert_eq!(t.cut_k(2).unwrap().threshold, 2.0);
+        assert_eq!(t.cut_k(3).unwrap().threshold, 1.0);
+        assert!(t.cut_k(5).is_err(), "more categories than scans");
     }
 }

@@ -30,7 +30,8 @@ pub struct ClusterArgs {
     /// hkmeans: cut the tree at this height.
     #[arg(long, allow_negative_numbers = true)]
     pub threshold: Option<f32>,
-    /// hkmeans: cut the tree where it gives this many categories.
+    /// hkmeans: cut the tree where it gives this many categories (its K - 1
+    /// highest splits; of two at one height, the parent's first).
     #[arg(long)]
     pub categories: Option<usize>,
     /// dbscan: neighbourhood radius (Delta <= eps).
