@@ -4,7 +4,7 @@ import init, { DescriptorSet, Model, parsePoses, presetParams, validateParams } 
 import { WorkerPool } from './pool.js';
 import { Dendrogram } from './dendrogram.js';
 import { TrajectoryMap } from './map.js';
-import { colour, drawThumbnail } from './colours.js';
+import { colour, drawThumbnail, shareColours } from './colours.js';
 import { loadNames, saveNames, datasetId } from './store.js';
 import { beginSession, saveScan, lastSession } from './session.js';
 import { filesFromDrop, filesFromInput, isScan, isTruth, isPoses, baseName } from './files.js';
@@ -21,6 +21,7 @@ const state = {
   params: null,
   set: null,
   tree: null,
+  cutBy: undefined, // 'threshold' | 'categories': what the user set last
   labels: null,
   categories: [], // [{label, members, medoid}]
   anchors: {},
@@ -31,7 +32,10 @@ const state = {
 
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url));
 const dendrogram = new Dendrogram($('dendrogram'), {
-  onThreshold: (t) => setThreshold(t),
+  onThreshold: (t) => {
+    state.cutBy = 'threshold';
+    setThreshold(t);
+  },
   onHover: (c, e) => hover(c, e),
 });
 const map = new TrajectoryMap($('map'), { onSelect: (i) => selectScan(i) });
@@ -208,6 +212,7 @@ function buildSet() {
   state.tree?.free();
   state.tree = null;
   $('threshold').value = '';
+  state.cutBy = undefined;
   cluster();
 }
 
@@ -225,8 +230,10 @@ function cluster() {
       state.tree = state.set.hkmeans(Number($('hk-seed').value) >>> 0);
       // Fetched once per tree: every threshold drag re-renders with them.
       state.treeNodes = state.tree.nodes();
-      let t = Number($('threshold').value);
-      if ($('threshold').value === '' || !(t >= 0)) t = state.tree.cutK(Math.min(5, n)).threshold;
+      // Keep what the user chose last: a number of categories or a threshold.
+      const t = Number($('threshold').value);
+      if (state.cutBy === 'categories') return setCategories(Number($('categories').value));
+      if ($('threshold').value === '' || !(t >= 0)) return setCategories(5);
       return setThreshold(t);
     }
     if (method === 'kmeans') {
@@ -245,10 +252,22 @@ function cluster() {
 
 function setThreshold(t) {
   if (!state.tree) return;
-  const cut = state.tree.cut(t);
+  showCut(state.tree.cut(t), t);
+}
+
+/** Exactly k categories (where two splits share a height, no threshold
+ * gives k; the tree's k - 1 highest splits still do). */
+function setCategories(k) {
+  if (!state.tree) return;
+  const cut = state.tree.cutK(Math.max(1, Math.min(Math.round(k) || 1, state.scans.length)));
+  showCut(cut, cut.threshold);
+}
+
+function showCut(cut, t) {
   state.labels = Int32Array.from(cut.labels);
   state.cutNodes = cut.nodes;
   $('threshold').value = t.toFixed(4);
+  $('categories').value = String(cut.nodes.length);
   render();
 }
 
@@ -284,6 +303,7 @@ function render() {
   const index = new Map(state.categories.map((c, i) => [c.label, i]));
   const colourIdx = Int32Array.from(state.labels, (l) => (l >= 0 ? index.get(l) : -1));
   state.colourIdx = colourIdx;
+  shareColours(colourSlots());
   renderLegend();
   if (state.tree) {
     const nodes = state.treeNodes;
@@ -362,6 +382,31 @@ function setName(cat, name) {
   for (const m of cat.members) delete state.anchors[state.scans[m].name];
   if (name.trim()) state.anchors[state.scans[cat.medoid].name] = name.trim();
   if (!saveNames(state.datasetId, state.anchors)) $('import-status').textContent = 'Could not save names in this browser; export them.';
+  recolour();
+}
+
+/** For each category, the first category with the same name (colour slot). */
+function colourSlots() {
+  const first = new Map();
+  return state.categories.map((c, i) => {
+    const name = nameOf(c);
+    if (!name) return i;
+    if (!first.has(name)) first.set(name, i);
+    return first.get(name);
+  });
+}
+
+/** After a name changed: recolour the legend in place (keeping the focus
+ * in the name being typed), the map and the dendrogram. */
+function recolour() {
+  shareColours(colourSlots());
+  for (const li of $('legend').children) {
+    const i = Number(li.dataset.category);
+    li.querySelector('.swatch').style.background = colour(i);
+    drawThumbnail(li.querySelector('canvas'), state.scans[state.categories[i].medoid].preview, colour(i));
+  }
+  map.draw();
+  dendrogram.draw();
 }
 
 function renderAccuracy() {
@@ -555,7 +600,14 @@ async function main() {
   $('apply-advanced').addEventListener('click', () => state.inputs.length && describeAll());
   $('method').addEventListener('change', () => { showMethod(); cluster(); });
   for (const id of ['hk-seed', 'k', 'seeding', 'km-seed', 'eps', 'minpts']) $(id).addEventListener('change', cluster);
-  $('threshold').addEventListener('change', () => setThreshold(Math.max(0, Number($('threshold').value) || 0)));
+  $('threshold').addEventListener('change', () => {
+    state.cutBy = 'threshold';
+    setThreshold(Math.max(0, Number($('threshold').value) || 0));
+  });
+  $('categories').addEventListener('change', () => {
+    state.cutBy = 'categories';
+    setCategories(Number($('categories').value));
+  });
   $('export-csv').addEventListener('click', exportCsv);
   $('export-model').addEventListener('click', exportModel);
   $('import').addEventListener('change', (e) => e.target.files[0] && importFile(e.target.files[0]));

@@ -1,9 +1,20 @@
 // Category colours: a qualitative palette, then evenly spaced hues.
 const PALETTE = ['#4e79a7', '#f28e2b', '#59a14f', '#e15759', '#b07aa1', '#76b7b2', '#edc948', '#9c755f', '#ff9da7', '#2f4b7c', '#a05195', '#665191'];
 export const NOISE = '#9aa0a6';
+
+// Categories the user gave one name are one kind of place: they share the
+// colour of the first of them, so the map shows kinds, not cut pieces.
+let shared = [];
+
+/** slots[i]: the category whose colour category i takes (i itself if none). */
+export function shareColours(slots) {
+  shared = slots;
+}
+
 export function colour(i) {
   if (i < 0) return NOISE;
-  return i < PALETTE.length ? PALETTE[i] : `hsl(${(i * 137.5) % 360} 60% 45%)`;
+  const k = shared[i] ?? i;
+  return k < PALETTE.length ? PALETTE[k] : `hsl(${(k * 137.5) % 360} 60% 45%)`;
 }
 
 /** Draw a top-down thumbnail of interleaved x,y,z points into a canvas. */

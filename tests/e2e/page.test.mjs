@@ -50,10 +50,25 @@ test('dragging the threshold changes the number of categories', async () => {
   await h.page.mouse.down();
   await h.page.mouse.up();
   assert.equal(await categories(), 1);
-  // And the numeric field.
+  // And the numeric fields: a threshold, or a number of categories (which
+  // then sets the threshold field to the cut's).
   await h.page.fill('#threshold', '0.3');
   await h.page.press('#threshold', 'Enter');
   assert.ok((await categories()) > 1);
+  for (const k of [3, 2, 6]) {
+    await h.page.fill('#categories', String(k));
+    await h.page.press('#categories', 'Enter');
+    assert.equal(await categories(), k);
+    assert.equal(await h.page.$$eval('#legend li', (li) => li.length), k);
+  }
+  // A new seed keeps the number of categories asked for.
+  for (const seed of ['3', '0']) {
+    await h.page.fill('#hk-seed', seed);
+    await h.page.dispatchEvent('#hk-seed', 'change');
+    assert.equal(await categories(), 6, `seed ${seed}`);
+  }
+  await h.page.fill('#threshold', '0.3');
+  await h.page.press('#threshold', 'Enter');
   await h.page.screenshot({ path: join(ARTIFACTS, 'threshold-dragged.png') });
 });
 
@@ -75,6 +90,38 @@ test('a name survives a reload and appears in the exported CSV', async () => {
   const rows = csv.slice(1).map((r) => r.split(','));
   assert.deepEqual(rows.map((r) => r[0]).sort(), groups.map((g) => g.split('/')[1]).sort());
   assert.equal(rows.filter((r) => r[1] === 'loading dock').length, size);
+});
+
+test('categories given one name share a colour in the legend and on the map', async () => {
+  assert.ok((await categories()) >= 3, 'several categories at threshold 0.3');
+  const swatches = () => h.page.$$eval('#legend .swatch', (xs) => xs.map((x) => x.style.background));
+  // Exact pixels of a CSS rgb() colour on the map canvas.
+  const onMap = (css) => h.page.evaluate((css) => {
+    const [r, g, b] = css.match(/\d+/g).map(Number);
+    const c = document.getElementById('map');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] === r && d[i + 1] === g && d[i + 2] === b && d[i + 3] === 255) n++;
+    return n;
+  }, css);
+  const before = await swatches();
+  assert.notEqual(before[2], before[1]);
+  assert.ok((await onMap(before[2])) > 0, 'the third category has its own colour on the map');
+  const inputs = h.page.locator('#legend input');
+  await inputs.nth(1).fill('same place');
+  await inputs.nth(2).fill('same place');
+  let now = await swatches();
+  assert.equal(now[2], before[1]);
+  assert.equal(now[0], before[0]);
+  assert.equal(await onMap(before[2]), 0, 'its own colour is gone from the map');
+  await h.page.screenshot({ path: join(ARTIFACTS, 'shared-colour.png') });
+  // Another name gives the colour back; no names leave every colour as it was.
+  await inputs.nth(2).fill('elsewhere');
+  now = await swatches();
+  assert.equal(now[2], before[2]);
+  await inputs.nth(1).fill('');
+  await inputs.nth(2).fill('');
+  assert.deepEqual(await swatches(), before);
 });
 
 test('the model exports, a malformed one is rejected, a good one loads', async () => {
