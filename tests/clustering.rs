@@ -4,6 +4,7 @@ mod common;
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
 use placecat::eval::{adjusted_rand_index, confusion, evaluate, Mapping};
+use placecat::model::LabelledModel;
 use placecat::sim::{SceneKind, SimParams, Simulation};
 use placecat::{
     delta_matrix, describe, Descriptor, DescriptorParams, DistanceMatrix, DistanceOptions,
@@ -324,4 +325,53 @@ fn simulated_indoor_kinds_are_told_apart_by_nearest_neighbour() {
         right >= 38,
         "{right} of 40 scans have a nearest neighbour of their kind"
     );
+}
+
+/// The page's way of naming: the tree cut finer than the kinds of place,
+/// each category named after most of its scans, so pieces of one kind share
+/// a name. The model keeps every piece's own centre and answers with the
+/// name, so scans of a kind the cut split still come back as that kind.
+#[test]
+fn categories_given_one_name_classify_as_that_name() {
+    let (ds, truth) = sim_set(8, 11);
+    let params = DescriptorParams::indoor();
+    let space = Space::new(&ds, DistanceOptions::from(&params)).unwrap();
+    let tree = HierarchicalKMeans::fit(&space, &space.matrix(), &HkMeansParams::new(0)).unwrap();
+    let cut = tree.cut_k(10).unwrap();
+    let mut ids = cut.labels.clone();
+    ids.sort_unstable();
+    ids.dedup();
+    let names: Vec<(i32, String)> = ids
+        .iter()
+        .map(|&l| {
+            let mut kinds: Vec<&String> = (0..ds.len())
+                .filter(|&i| cut.labels[i] == l)
+                .map(|i| &truth[i])
+                .collect();
+            kinds.sort();
+            let most = kinds
+                .chunk_by(|a, b| a == b)
+                .max_by_key(|run| run.len())
+                .unwrap()[0];
+            (l, most.clone())
+        })
+        .collect();
+    let mut distinct: Vec<&String> = names.iter().map(|(_, n)| n).collect();
+    distinct.sort();
+    distinct.dedup();
+    // More categories than kinds (10, or the nearest count the tree's
+    // tied heights allow): some names are shared.
+    assert!(ids.len() > 5 && distinct.len() <= 5, "{ids:?} {distinct:?}");
+    let model = LabelledModel::build(&params, &ds, &cut.labels, &names).unwrap();
+    let model = LabelledModel::from_json(&model.to_json().unwrap()).unwrap();
+    assert_eq!(model.categories.len(), ids.len());
+    let named = evaluate(&truth, &cut.labels).unwrap().accuracy;
+    let right = ds
+        .iter()
+        .zip(&truth)
+        .filter(|(d, t)| model.classify(d).unwrap().name == **t)
+        .count();
+    eprintln!("named cut {named}, classified by name {right} of 40");
+    assert!(named >= 0.9, "the cut named by majority: {named}");
+    assert!(right >= 36, "{right} of 40 scans classified as their kind");
 }
