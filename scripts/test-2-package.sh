@@ -29,6 +29,9 @@ assert.equal(labels.length, 4);
 assert.equal(labels[0], labels[1], 'the two room scans share a category');
 assert.equal(labels[2], labels[3], 'the two velodyne scans share a category');
 assert.notEqual(labels[0], labels[2]);
+const cut = set.hkmeans(0).cutK(2).labels;
+assert.equal(cut.length, 4);
+assert.ok(cut[0] === cut[1] && cut[2] === cut[3] && cut[0] !== cut[2], `hkmeans cut into 2: ${cut}`);
 assert.throws(() => set.kmeans(0, 'stride', 0), /k must be at least 1/);
 console.log(`placecat ${version()} from the packed tarball: labels ${labels.join(',')}`);
 JS
