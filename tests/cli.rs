@@ -324,3 +324,83 @@ fn simulate_rooms_from_one_or_many_buildings() {
         "{err}"
     );
 }
+
+/// A model made from two real places (as the page's "Export model" writes
+/// it) puts each real scan in its place; a broken file is reported by name
+/// and skipped; a file that is not a model is a clear error.
+#[test]
+fn classify_new_scans_with_a_saved_model() {
+    let dir = tmp("classify");
+    let params = placecat::DescriptorParams::indoor();
+    let files = [
+        "pcl_room/room_scan1.pcd",
+        "pcl_room/room_scan2.pcd",
+        "velodyne_pair/251370668.pcd",
+        "velodyne_pair/251371071.pcd",
+    ];
+    let descriptors: Vec<placecat::Descriptor> = files
+        .iter()
+        .map(|f| {
+            let path = std::path::PathBuf::from(format!("{REAL}/{f}"));
+            let cloud = placecat::io::read_path(&path, &Default::default()).unwrap();
+            placecat::describe(&cloud.points, &params).unwrap()
+        })
+        .collect();
+    let model = placecat::model::LabelledModel::build(
+        &params,
+        &descriptors,
+        &[0, 0, 1, 1],
+        &[(0, "room".into()), (1, "street".into())],
+    )
+    .unwrap();
+    let model_path = dir.join("model.json");
+    std::fs::write(&model_path, model.to_json().unwrap()).unwrap();
+    let broken = dir.join("broken.ply");
+    std::fs::write(&broken, b"ply\nformat ascii 1.0\nelement vertex 5\n").unwrap();
+
+    let csv_path = dir.join("named.csv");
+    let out = succeeds(placecat().args([
+        "classify",
+        model_path.to_str().unwrap(),
+        &format!("{REAL}/pcl_room"),
+        &format!("{REAL}/velodyne_pair"),
+        broken.to_str().unwrap(),
+        "-o",
+        csv_path.to_str().unwrap(),
+    ]));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("broken.ply"), "{stderr}");
+    assert!(stderr.contains("classified 4 of 5 files"), "{stderr}");
+    let csv = std::fs::read_to_string(&csv_path).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows[0], ["file", "category", "distance", "relative"]);
+    assert_eq!(rows.len(), 5);
+    for row in &rows[1..] {
+        let want = if row[0].contains("pcl_room") {
+            "room"
+        } else {
+            "street"
+        };
+        assert_eq!(row[1], want, "{row:?}");
+        // Scans the model was made from lie within their category's reach.
+        let (distance, relative): (f32, f32) = (row[2].parse().unwrap(), row[3].parse().unwrap());
+        assert!(
+            distance >= 0.0 && (0.0..=1.0 + 1e-4).contains(&relative),
+            "{row:?}"
+        );
+    }
+
+    // To stdout; and a model file that is not one.
+    let out = succeeds(placecat().args([
+        "classify",
+        model_path.to_str().unwrap(),
+        &format!("{REAL}/pcl_room/room_scan2.pcd"),
+    ]));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("room_scan2.pcd,room,"));
+    let err = fails(placecat().args([
+        "classify",
+        csv_path.to_str().unwrap(),
+        &format!("{REAL}/pcl_room/room_scan2.pcd"),
+    ]));
+    assert!(err.contains("named.csv"), "{err}");
+}

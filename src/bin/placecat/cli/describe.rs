@@ -42,7 +42,7 @@ impl DescriptorSet {
 }
 
 /// Expand folders into the scans inside them, sorted by name.
-fn expand(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
+pub fn expand(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
     let mut files = Vec::new();
     for input in inputs {
         if input.is_dir() {
@@ -96,20 +96,54 @@ pub fn run(
     let params = load_params(preset, params)?;
     params.validate()?;
     let files = expand(inputs)?;
+    let mut set = DescriptorSet {
+        files: Vec::new(),
+        errors: Vec::new(),
+        params,
+    };
+    for r in describe_files(&files, &set.params, limits, "describing")? {
+        match r {
+            Ok(f) => set.files.push(f),
+            Err(e) => set.errors.push(e),
+        }
+    }
+    let text = serde_json::to_string(&set)?;
+    super::write_out(Some(output), &text)?;
+    eprintln!(
+        "described {} of {} files -> {}",
+        set.files.len(),
+        files.len(),
+        output.display()
+    );
+    Ok(if set.files.is_empty() {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// Read and describe files in parallel (each worker holds one file's
+/// points at a time), with a progress bar; a file that fails is reported
+/// on stderr and comes back as its error, in input order.
+pub fn describe_files(
+    files: &[PathBuf],
+    params: &DescriptorParams,
+    limits: &ReadLimits,
+    what: &'static str,
+) -> Result<Vec<std::result::Result<DescribedFile, FileError>>> {
     if files.is_empty() {
         return Err(Error::InvalidParameter(
             "no scan files in the inputs".into(),
         ));
     }
-    let bar = progress::bar(files.len() as u64, "describing");
-    // Files in parallel; each worker holds one file's points at a time.
+    let bar = progress::bar(files.len() as u64, what);
     let results: Vec<std::result::Result<DescribedFile, FileError>> = files
         .par_iter()
         .map(|path| {
             let shown = path.display().to_string();
             let out = read_path(path, limits)
                 .and_then(|cloud| {
-                    placecat::describe(&cloud.points, &params).map_err(|e| e.in_file(&shown))
+                    placecat::describe(&cloud.points, params).map_err(|e| e.in_file(&shown))
                 })
                 .map(|descriptor| DescribedFile {
                     name: path
@@ -128,33 +162,10 @@ pub fn run(
         })
         .collect();
     bar.finish_and_clear();
-    let mut set = DescriptorSet {
-        params,
-        files: Vec::new(),
-        errors: Vec::new(),
-    };
-    for r in results {
-        match r {
-            Ok(f) => set.files.push(f),
-            Err(e) => {
-                eprintln!("skipped {}", e.error);
-                set.errors.push(e);
-            }
-        }
+    for e in results.iter().filter_map(|r| r.as_ref().err()) {
+        eprintln!("skipped {}", e.error);
     }
-    let text = serde_json::to_string(&set)?;
-    super::write_out(Some(output), &text)?;
-    eprintln!(
-        "described {} of {} files -> {}",
-        set.files.len(),
-        files.len(),
-        output.display()
-    );
-    Ok(if set.files.is_empty() {
-        ExitCode::FAILURE
-    } else {
-        ExitCode::SUCCESS
-    })
+    Ok(results)
 }
 
 /// CSV cell: quoted when it holds a comma, quote or newline.

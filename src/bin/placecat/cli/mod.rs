@@ -1,5 +1,6 @@
 //! Argument parsing and dispatch.
 
+mod classify;
 mod cluster;
 mod describe;
 mod info;
@@ -81,6 +82,23 @@ enum Command {
         #[arg(short, long)]
         output: PathBuf,
     },
+    /// Put new scans into the named categories of a model (the page's
+    /// "Export model"): CSV file,category,distance,relative.
+    Classify {
+        model: PathBuf,
+        /// Files or folders (folders: every scan inside, sorted by name).
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+        /// CSV file to write (default: stdout).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Refuse scans with more points (checked before allocating).
+        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_points)]
+        max_points: usize,
+        /// Refuse files larger than this many bytes.
+        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_bytes)]
+        max_bytes: usize,
+    },
     /// The Delta matrix of described scans, as CSV.
     Distances {
         descriptors: PathBuf,
@@ -127,6 +145,21 @@ pub fn main() -> ExitCode {
             descriptors,
             output,
         } => describe::distances(&descriptors, output.as_deref()),
+        Command::Classify {
+            model,
+            inputs,
+            output,
+            max_points,
+            max_bytes,
+        } => classify::run(
+            &model,
+            &inputs,
+            output.as_deref(),
+            &placecat::io::ReadLimits {
+                max_points,
+                max_bytes,
+            },
+        ),
     };
     match result {
         Ok(code) => code,
