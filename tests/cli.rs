@@ -325,36 +325,51 @@ fn simulate_rooms_from_one_or_many_buildings() {
     );
 }
 
-/// A model made from two real places (as the page's "Export model" writes
-/// it) puts each real scan in its place; a broken file is reported by name
-/// and skipped; a file that is not a model is a clear error.
+/// The batch path to a named model: describe, name the files (as the
+/// page's "Export CSV" writes them), build the model; it then puts each
+/// real scan in its place. A broken file is reported by name and skipped;
+/// files that are not a model or name no scan are clear errors.
 #[test]
-fn classify_new_scans_with_a_saved_model() {
+fn model_from_named_scans_classifies_new_scans() {
     let dir = tmp("classify");
-    let params = placecat::DescriptorParams::indoor();
-    let files = [
-        "pcl_room/room_scan1.pcd",
-        "pcl_room/room_scan2.pcd",
-        "velodyne_pair/251370668.pcd",
-        "velodyne_pair/251371071.pcd",
-    ];
-    let descriptors: Vec<placecat::Descriptor> = files
-        .iter()
-        .map(|f| {
-            let path = std::path::PathBuf::from(format!("{REAL}/{f}"));
-            let cloud = placecat::io::read_path(&path, &Default::default()).unwrap();
-            placecat::describe(&cloud.points, &params).unwrap()
-        })
-        .collect();
-    let model = placecat::model::LabelledModel::build(
-        &params,
-        &descriptors,
-        &[0, 0, 1, 1],
-        &[(0, "room".into()), (1, "street".into())],
+    let descriptors = dir.join("described.json");
+    succeeds(placecat().args([
+        "describe",
+        &format!("{REAL}/pcl_room"),
+        &format!("{REAL}/velodyne_pair"),
+        "-o",
+        descriptors.to_str().unwrap(),
+    ]));
+    let names = dir.join("names.csv");
+    std::fs::write(
+        &names,
+        "file,category\nroom_scan1.pcd,room\nroom_scan2.pcd,room\n251370668.pcd,street\n251371071.pcd,street\nunknown.pcd,street\n",
     )
     .unwrap();
     let model_path = dir.join("model.json");
-    std::fs::write(&model_path, model.to_json().unwrap()).unwrap();
+    let build_model = || {
+        let mut cmd = placecat();
+        cmd.arg("model")
+            .arg(&descriptors)
+            .arg("--names")
+            .arg(&names);
+        cmd.arg("-o").arg(&model_path);
+        cmd
+    };
+    let out = succeeds(&mut build_model());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("2 categories from 4 scans (0 not named)"),
+        "{stderr}"
+    );
+    let model: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&model_path).unwrap()).unwrap();
+    let categories = model["categories"].as_array().unwrap();
+    assert_eq!(categories.len(), 2);
+    assert_eq!(categories[0]["name"], "room");
+    assert_eq!(categories[0]["members"], 2);
+    assert_eq!(categories[1]["name"], "street");
+    assert_eq!(categories[1]["members"], 2);
     let broken = dir.join("broken.ply");
     std::fs::write(&broken, b"ply\nformat ascii 1.0\nelement vertex 5\n").unwrap();
 
@@ -403,4 +418,10 @@ fn classify_new_scans_with_a_saved_model() {
         &format!("{REAL}/pcl_room/room_scan2.pcd"),
     ]));
     assert!(err.contains("named.csv"), "{err}");
+    std::fs::write(&names, "file,category\nelsewhere.pcd,room\n").unwrap();
+    let err = fails(&mut build_model());
+    assert!(
+        err.contains("names.csv") && err.contains("names none of the 4 scans"),
+        "{err}"
+    );
 }

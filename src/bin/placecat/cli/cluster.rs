@@ -128,7 +128,8 @@ pub fn read_truth(path: &Path) -> Result<Vec<(String, String)>> {
     let mut rows = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let line = line.trim();
-        if line.is_empty() || (i == 0 && line.eq_ignore_ascii_case("file,label")) {
+        // A header: labels.csv's file,label or the page's file,category.
+        if line.is_empty() || (i == 0 && line.to_ascii_lowercase().starts_with("file,")) {
             continue;
         }
         let Some((f, l)) = line.split_once(',') else {

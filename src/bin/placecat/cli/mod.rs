@@ -1,9 +1,9 @@
 //! Argument parsing and dispatch.
 
-mod classify;
 mod cluster;
 mod describe;
 mod info;
+mod model;
 mod progress;
 
 use clap::{Parser, Subcommand};
@@ -82,6 +82,15 @@ enum Command {
         #[arg(short, long)]
         output: PathBuf,
     },
+    /// A named model from described scans and a file,name CSV (the page's
+    /// "Export CSV" or a labels.csv): one category per name.
+    Model {
+        descriptors: PathBuf,
+        #[arg(long)]
+        names: PathBuf,
+        #[arg(short, long)]
+        output: PathBuf,
+    },
     /// Put new scans into the named categories of a model (the page's
     /// "Export model"): CSV file,category,distance,relative.
     Classify {
@@ -145,13 +154,18 @@ pub fn main() -> ExitCode {
             descriptors,
             output,
         } => describe::distances(&descriptors, output.as_deref()),
+        Command::Model {
+            descriptors,
+            names,
+            output,
+        } => model::build(&descriptors, &names, &output),
         Command::Classify {
             model,
             inputs,
             output,
             max_points,
             max_bytes,
-        } => classify::run(
+        } => model::classify(
             &model,
             &inputs,
             output.as_deref(),

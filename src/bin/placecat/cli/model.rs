@@ -1,0 +1,97 @@
+//! Named models: `placecat model` builds one from described scans and
+//! their names, `placecat classify` puts new scans into its categories
+//! (also for models exported from the page).
+
+use super::cluster::read_truth;
+use super::describe::{csv_cell, describe_files, expand, DescriptorSet};
+use placecat::io::ReadLimits;
+use placecat::model::LabelledModel;
+use placecat::{Descriptor, Error, Result};
+use std::collections::HashMap;
+use std::fmt::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// One category per distinct name in `names` (`file,name` rows: the page's
+/// "Export CSV", or a labels.csv); scans it does not name are left out.
+pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode> {
+    let set = DescriptorSet::load(descriptors)?;
+    let table: HashMap<String, String> = read_truth(names)?.into_iter().collect();
+    let mut kinds: Vec<String> = Vec::new();
+    let labels: Vec<i32> = set
+        .files
+        .iter()
+        .map(|f| match table.get(&f.name) {
+            Some(name) => match kinds.iter().position(|k| k == name) {
+                Some(i) => i as i32,
+                None => {
+                    kinds.push(name.clone());
+                    kinds.len() as i32 - 1
+                }
+            },
+            None => -1,
+        })
+        .collect();
+    if kinds.is_empty() {
+        return Err(Error::Mismatch(format!(
+            "names none of the {} scans of {}",
+            set.files.len(),
+            descriptors.display()
+        ))
+        .in_file(names.display().to_string()));
+    }
+    let descriptors_only: Vec<Descriptor> =
+        set.files.iter().map(|f| f.descriptor.clone()).collect();
+    let named: Vec<(i32, String)> = (0..).zip(kinds.iter().cloned()).collect();
+    let model = LabelledModel::build(&set.params, &descriptors_only, &labels, &named)?;
+    super::write_out(Some(output), &model.to_json()?)?;
+    let unnamed = labels.iter().filter(|&&l| l < 0).count();
+    eprintln!(
+        "model of {} categories from {} scans ({unnamed} not named) -> {}",
+        kinds.len(),
+        labels.len() - unnamed,
+        output.display()
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// CSV `file,category,distance,relative` to `output` (stdout if none):
+/// each scan's nearest category; relative > 1 means farther from it than
+/// any scan the category was made from. Bad files are reported and skipped.
+pub fn classify(
+    model: &Path,
+    inputs: &[PathBuf],
+    output: Option<&Path>,
+    limits: &ReadLimits,
+) -> Result<ExitCode> {
+    let shown = model.display().to_string();
+    let text = std::fs::read_to_string(model).map_err(|e| Error::from(e).in_file(&shown))?;
+    let model = LabelledModel::from_json(&text).map_err(|e| e.in_file(&shown))?;
+    let files = expand(inputs)?;
+    let mut out = String::from("file,category,distance,relative\n");
+    let mut classified = 0;
+    // The scans are described with the model's own parameters.
+    for described in describe_files(&files, &model.params, limits, "classifying")?
+        .into_iter()
+        .flatten()
+    {
+        let c = model.classify(&described.descriptor)?;
+        classified += 1;
+        writeln!(
+            out,
+            "{},{},{},{}",
+            csv_cell(&described.path),
+            csv_cell(&c.name),
+            c.distance,
+            c.relative
+        )
+        .expect("writing to a String");
+    }
+    super::write_out(output, &out)?;
+    eprintln!("classified {classified} of {} files", files.len());
+    Ok(if classified == 0 {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    })
+}
