@@ -43,12 +43,8 @@ enum Command {
         inputs: Vec<PathBuf>,
         #[arg(short, long)]
         output: PathBuf,
-        /// Refuse scans with more points (checked before allocating).
-        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_points)]
-        max_points: usize,
-        /// Refuse files larger than this many bytes.
-        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_bytes)]
-        max_bytes: usize,
+        #[command(flatten)]
+        limits: Limits,
     },
     /// Cluster described scans into categories.
     Cluster {
@@ -101,12 +97,8 @@ enum Command {
         /// CSV file to write (default: stdout).
         #[arg(short, long)]
         output: Option<PathBuf>,
-        /// Refuse scans with more points (checked before allocating).
-        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_points)]
-        max_points: usize,
-        /// Refuse files larger than this many bytes.
-        #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_bytes)]
-        max_bytes: usize,
+        #[command(flatten)]
+        limits: Limits,
     },
     /// The Delta matrix of described scans, as CSV.
     Distances {
@@ -114,6 +106,26 @@ enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+}
+
+/// How large a scan file may be (checked before allocating).
+#[derive(clap::Args)]
+struct Limits {
+    /// Refuse scans with more points.
+    #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_points)]
+    max_points: usize,
+    /// Refuse files larger than this many bytes.
+    #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_bytes)]
+    max_bytes: usize,
+}
+
+impl From<Limits> for placecat::io::ReadLimits {
+    fn from(l: Limits) -> Self {
+        placecat::io::ReadLimits {
+            max_points: l.max_points,
+            max_bytes: l.max_bytes,
+        }
+    }
 }
 
 pub fn main() -> ExitCode {
@@ -125,18 +137,8 @@ pub fn main() -> ExitCode {
             params,
             inputs,
             output,
-            max_points,
-            max_bytes,
-        } => describe::run(
-            &preset,
-            params.as_deref(),
-            &inputs,
-            &output,
-            &placecat::io::ReadLimits {
-                max_points,
-                max_bytes,
-            },
-        ),
+            limits,
+        } => describe::run(&preset, params.as_deref(), &inputs, &output, &limits.into()),
         Command::Cluster {
             descriptors,
             args,
@@ -163,17 +165,8 @@ pub fn main() -> ExitCode {
             model,
             inputs,
             output,
-            max_points,
-            max_bytes,
-        } => model::classify(
-            &model,
-            &inputs,
-            output.as_deref(),
-            &placecat::io::ReadLimits {
-                max_points,
-                max_bytes,
-            },
-        ),
+            limits,
+        } => model::classify(&model, &inputs, output.as_deref(), &limits.into()),
     };
     match result {
         Ok(code) => code,
