@@ -111,7 +111,7 @@ enum Command {
 /// How large a scan file may be (checked before allocating).
 #[derive(clap::Args)]
 struct Limits {
-    /// Refuse scans with more points.
+    /// Refuse scans with more points (checked before allocating).
     #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_points)]
     max_points: usize,
     /// Refuse files larger than this many bytes.
