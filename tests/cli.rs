@@ -418,6 +418,20 @@ fn model_from_named_scans_classifies_new_scans() {
         &format!("{REAL}/pcl_room/room_scan2.pcd"),
     ]));
     assert!(err.contains("named.csv"), "{err}");
+    // Names as the page's export quotes them; an unclosed quote is an error.
+    std::fs::write(
+        &names,
+        "file,category\nroom_scan1.pcd,\"room, \"\"B\"\" wing\"\n\"251370668.pcd\",street\n",
+    )
+    .unwrap();
+    succeeds(&mut build_model());
+    let model: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&model_path).unwrap()).unwrap();
+    assert_eq!(model["categories"][0]["name"], "room, \"B\" wing");
+    assert_eq!(model["categories"][1]["name"], "street");
+    std::fs::write(&names, "file,category\nroom_scan1.pcd,\"room\n").unwrap();
+    let err = fails(&mut build_model());
+    assert!(err.contains("line 2: a quote is not closed"), "{err}");
     std::fs::write(&names, "file,category\nelsewhere.pcd,room\n").unwrap();
     let err = fails(&mut build_model());
     assert!(

@@ -1,6 +1,6 @@
 //! `placecat cluster`, `placecat evaluate`, `placecat simulate`.
 
-use super::describe::DescriptorSet;
+use super::describe::{csv_cells, DescriptorSet};
 use super::progress;
 use placecat::cluster::{
     hkmeans::HkMeansParams, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams,
@@ -132,8 +132,15 @@ pub fn read_truth(path: &Path) -> Result<Vec<(String, String)>> {
         if line.is_empty() || (i == 0 && line.to_ascii_lowercase().starts_with("file,")) {
             continue;
         }
-        let Some((f, l)) = line.split_once(',') else {
-            return Err(Error::Csv(format!("line {}: expected file,label", i + 1)).in_file(&name));
+        let cells = csv_cells(line).ok_or_else(|| {
+            Error::Csv(format!("line {}: a quote is not closed", i + 1)).in_file(&name)
+        })?;
+        let Ok([f, l]) = <[String; 2]>::try_from(cells) else {
+            return Err(Error::Csv(format!(
+                "line {}: expected two cells, file,label (quote a name that holds a comma)",
+                i + 1
+            ))
+            .in_file(&name));
         };
         rows.push((basename(f.trim()), l.trim().to_string()));
     }
