@@ -40,8 +40,8 @@ pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode
         ))
         .in_file(names.display().to_string()));
     }
-    let descriptors_only: Vec<Descriptor> =
-        set.files.iter().map(|f| f.descriptor.clone()).collect();
+    // The labels are made; the descriptors can move out of the set.
+    let descriptors_only: Vec<Descriptor> = set.files.into_iter().map(|f| f.descriptor).collect();
     let named: Vec<(i32, String)> = (0..).zip(kinds.iter().cloned()).collect();
     let model = LabelledModel::build(&set.params, &descriptors_only, &labels, &named)?;
     super::write_out(Some(output), &model.to_json()?)?;
@@ -75,7 +75,15 @@ pub fn classify(
         .into_iter()
         .flatten()
     {
-        let c = model.classify(&described.descriptor)?;
+        // Described with the model's parameters, a scan matches its shape;
+        // should it not, that one file is reported, never the batch ended.
+        let c = match model.classify(&described.descriptor) {
+            Ok(c) => c,
+            Err(e) => {
+                eprintln!("skipped {}: {e}", described.path);
+                continue;
+            }
+        };
         classified += 1;
         writeln!(
             out,
