@@ -45,7 +45,21 @@ pub struct Classification {
     pub label: i32,
     pub distance: f32,
     /// distance / the category's radius (> 1: farther than any member was).
+    /// A category made from one scan has radius 0: a scan at distance 0 (the
+    /// same scan again) is 0, any other is infinite.
     pub relative: f32,
+}
+
+/// `distance / radius`, where a zero radius (a one-scan category) gives 0
+/// for a zero distance instead of NaN: "as near as any member was".
+fn relative_distance(distance: f32, radius: f32) -> f32 {
+    if radius > 0.0 {
+        distance / radius
+    } else if distance == 0.0 {
+        0.0
+    } else {
+        f32::INFINITY
+    }
 }
 
 impl LabelledModel {
@@ -184,11 +198,7 @@ impl LabelledModel {
                     name: c.name.clone(),
                     label: c.label,
                     distance: dist,
-                    relative: if c.radius > 0.0 {
-                        dist / c.radius
-                    } else {
-                        f32::INFINITY
-                    },
+                    relative: relative_distance(dist, c.radius),
                 });
             }
         }

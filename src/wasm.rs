@@ -497,7 +497,10 @@ impl Model {
     pub fn params(&self) -> WasmResult<JsValue> {
         to_js(&self.model.params)
     }
-    /// Classify a described scan: `{name, label, distance, relative}`.
+    /// Classify a described scan: `{name, label, distance, relative}`
+    /// (`relative` = distance / the category's radius; > 1: farther than
+    /// any scan it was made from; `Infinity` for a one-scan category and
+    /// any other scan).
     pub fn classify(&self, scan: &DescribedScan) -> WasmResult<JsValue> {
         to_js(&self.model.classify(&scan.descriptor).map_err(js_err)?)
     }

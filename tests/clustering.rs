@@ -365,3 +365,27 @@ fn categories_given_one_name_classify_as_that_name() {
     assert!(named.accuracy >= 0.9, "the cut named: {}", named.accuracy);
     assert!(right >= 36, "{right} of 40 scans classified as their kind");
 }
+
+#[test]
+fn a_one_scan_category_is_near_to_its_own_scan_and_far_from_others() {
+    let (ds, truth) = sim_set(2, 12);
+    let params = DescriptorParams::indoor();
+    // Category 0: the first scan alone (radius 0); category 1: the rest.
+    let labels: Vec<i32> = (0..ds.len()).map(|i| i32::from(i > 0)).collect();
+    let names = vec![(0, truth[0].clone()), (1, "rest".to_string())];
+    let model = LabelledModel::build(&params, &ds, &labels, &names).unwrap();
+    assert_eq!(model.categories[0].members, 1);
+    assert_eq!(model.categories[0].radius, 0.0);
+    let own = model.classify(&ds[0]).unwrap();
+    assert_eq!((own.label, own.distance, own.relative), (0, 0.0, 0.0));
+    // A scan of the rest that is nearer the one-scan category than the
+    // rest's centre would be infinitely beyond its radius; every scan of
+    // the rest is within the rest's radius.
+    for d in &ds[1..] {
+        let c = model.classify(d).unwrap();
+        match c.label {
+            0 => assert!(c.distance > 0.0 && c.relative.is_infinite(), "{c:?}"),
+            _ => assert!(c.relative <= 1.0 + 1e-4, "{c:?}"),
+        }
+    }
+}
