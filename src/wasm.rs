@@ -324,6 +324,30 @@ impl DescriptorSet {
         let labels = Dbscan::fit(m, &DbscanParams::new(eps, min_points)).map_err(js_err)?;
         Ok(js_sys::Int32Array::from(&labels[..]))
     }
+    /// Epsilons worth sweeping on this set: quantiles 0.5 % to 50 % of the
+    /// Delta between two different scans, 3 significant digits, ascending.
+    #[wasm_bindgen(js_name = epsilonGrid)]
+    pub fn epsilon_grid(&mut self) -> WasmResult<js_sys::Float32Array> {
+        let grid = crate::eval::epsilon_grid(self.matrix()?);
+        Ok(js_sys::Float32Array::from(&grid[..]))
+    }
+    /// DBSCAN at every epsilon x minPoints (paper Fig. 3), epsilon-major:
+    /// `[{epsilon, min_points, clusters, inlier_ratio, ari, score}, ...]`.
+    /// `truth` (a class name per scan) adds `ari` and `score` (S = ARI x
+    /// inliers / all); without it they are `null`.
+    #[wasm_bindgen(js_name = dbscanSweep)]
+    pub fn dbscan_sweep(
+        &mut self,
+        epsilons: &[f32],
+        min_points: &[u32],
+        truth: Option<Vec<String>>,
+    ) -> WasmResult<JsValue> {
+        let cs: Vec<usize> = min_points.iter().map(|&c| c as usize).collect();
+        let m = self.matrix()?;
+        let sweep =
+            crate::eval::dbscan_sweep(m, truth.as_deref(), epsilons, &cs).map_err(js_err)?;
+        to_js(&sweep)
+    }
     /// Hierarchical k-means++: the whole tree, to cut at any threshold.
     /// Above `matrixLimit` scans it runs without the n x n matrix (see
     /// `usesMatrix`): heights of nodes over 1500 scans are then an upper

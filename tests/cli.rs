@@ -264,10 +264,11 @@ fn simulate_describe_cluster_evaluate_round_trip() {
         "hk2.json",
     );
     assert_eq!(hk2["labels"], hk["labels"]);
-    run(
+    let db = run(
         &["--method", "dbscan", "--eps", "0.5", "--min-points", "2"],
         "db.json",
     );
+    sweep_agrees_with_dbscan(&d, &sim.join("labels.csv"), &dir, &db);
     for (args, want) in [
         (
             &["--method", "kmeans", "--k", "0"][..],
@@ -292,6 +293,90 @@ fn simulate_describe_cluster_evaluate_round_trip() {
                 .arg("-o")
                 .arg(dir.join("bad.json")),
         );
+        assert!(e.contains(want), "{args:?}: {e}");
+    }
+}
+
+/// `placecat sweep` on the same descriptors: its row at (0.5, 2) is what
+/// `cluster --method dbscan` and `evaluate` said; the default grid.
+fn sweep_agrees_with_dbscan(
+    d: &std::path::Path,
+    truth: &std::path::Path,
+    dir: &std::path::Path,
+    db: &serde_json::Value,
+) {
+    let rows = |out: &Output| -> Vec<Vec<String>> {
+        String::from_utf8_lossy(&out.stdout)
+            .lines()
+            .map(|l| l.split(',').map(String::from).collect())
+            .collect()
+    };
+    let out = succeeds(
+        placecat()
+            .arg("sweep")
+            .arg(d)
+            .arg("--truth")
+            .arg(truth)
+            .args(["--eps", "0.25,0.5", "--min-points", "2,3"]),
+    );
+    let table = rows(&out);
+    assert_eq!(
+        table[0].join(","),
+        "epsilon,min_points,clusters,inlier_ratio,ari,score"
+    );
+    assert_eq!(table.len(), 5, "{table:?}");
+    let at = table.iter().find(|r| r[0] == "0.5" && r[1] == "2").unwrap();
+    let labels: Vec<i64> = db["labels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_i64().unwrap())
+        .collect();
+    let clusters = labels.iter().max().unwrap() + 1;
+    let inliers = labels.iter().filter(|&&l| l >= 0).count() as f64 / labels.len() as f64;
+    assert_eq!(at[2], clusters.to_string());
+    assert_eq!(at[3], format!("{inliers:.4}"));
+    let ev = succeeds(
+        placecat()
+            .arg("evaluate")
+            .arg(dir.join("db.json"))
+            .arg("--truth")
+            .arg(truth),
+    );
+    let ev: serde_json::Value = serde_json::from_slice(&ev.stdout).unwrap();
+    assert_eq!(at[4], format!("{:.4}", ev["ari"].as_f64().unwrap()));
+    assert_eq!(at[5], format!("{:.4}", ev["score"].as_f64().unwrap()));
+    let best = String::from_utf8_lossy(&out.stderr);
+    assert!(best.starts_with("best S "), "{best}");
+
+    // The default grid, without truth, to a file: ascending epsilons, each
+    // with the five default min points, and no AR.
+    let csv = dir.join("sweep.csv");
+    let out = succeeds(placecat().arg("sweep").arg(d).arg("-o").arg(&csv));
+    assert!(out.stdout.is_empty() && out.stderr.is_empty());
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let table: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(table.len() % 5, 0);
+    assert!((2..=12 * 5).contains(&table.len()), "{} rows", table.len());
+    let eps: Vec<f32> = table.iter().map(|r| r[0].parse().unwrap()).collect();
+    assert!(eps.windows(2).all(|w| w[0] <= w[1]), "{eps:?}");
+    let cs: Vec<&str> = table[..5].iter().map(|r| r[1]).collect();
+    assert_eq!(cs, ["2", "3", "5", "8", "12"]);
+    assert!(table.iter().all(|r| r[4].is_empty() && r[5].is_empty()));
+
+    for (args, want) in [
+        (&["--eps", "-1"][..], "epsilon"),
+        (&["--min-points", "0"][..], "min_points"),
+        (
+            &["--truth", "/nonexistent/labels.csv"][..],
+            "/nonexistent/labels.csv",
+        ),
+    ] {
+        let e = fails(placecat().arg("sweep").arg(d).args(args));
         assert!(e.contains(want), "{args:?}: {e}");
     }
 }

@@ -4,6 +4,7 @@ import init, { DescriptorSet, Model, parsePoses, presetParams, validateParams } 
 import { WorkerPool } from './pool.js';
 import { Dendrogram } from './dendrogram.js';
 import { TrajectoryMap } from './map.js';
+import { renderSweep, f32String } from './sweep.js';
 import { colour, drawThumbnail, shareColours } from './colours.js';
 import { loadNames, saveNames, datasetId } from './store.js';
 import { beginSession, saveScan, lastSession } from './session.js';
@@ -61,6 +62,7 @@ function resetResults() {
   state.tree?.free();
   state.tree = null;
   state.labels = null;
+  clearSweep();
   state.categories = [];
   $('errors').replaceChildren();
   $('errors-box').hidden = true;
@@ -106,6 +108,7 @@ async function loadTruth(file) {
   }
   state.truth = truth;
   if (state.scans.length) render();
+  if ($('sweep-table').childElementCount) runSweep(); // now with S
 }
 
 async function loadPoses(file, name) {
@@ -209,6 +212,7 @@ function buildSet() {
   state.set?.free();
   state.set = new DescriptorSet(state.params, undefined);
   for (const s of state.scans) state.set.addJson(s.descriptorJson);
+  clearSweep();
   state.tree?.free();
   state.tree = null;
   $('threshold').value = '';
@@ -409,10 +413,16 @@ function recolour() {
   dendrogram.draw();
 }
 
+/** Ground truth per scan, or undefined when there is none for some scan. */
+function truthLabels() {
+  const truth = state.truth && state.scans.map((s) => state.truth.get(s.name));
+  return truth && !truth.some((t) => t === undefined) ? truth : undefined;
+}
+
 function renderAccuracy() {
   if (!state.truth) return ($('accuracy').textContent = '');
-  const truth = state.scans.map((s) => state.truth.get(s.name));
-  if (truth.some((t) => t === undefined)) return ($('accuracy').textContent = 'labels.csv does not cover every scan');
+  const truth = truthLabels();
+  if (!truth) return ($('accuracy').textContent = 'labels.csv does not cover every scan');
   const ev = DescriptorSet.evaluate(truth, state.labels);
   $('accuracy').textContent = `Against ground truth: accuracy ${(100 * ev.accuracy).toFixed(1)} %, ARI ${ev.ari.toFixed(3)}${ev.inliers < ev.total ? `, S ${ev.score.toFixed(3)}` : ''}`;
 }
@@ -553,6 +563,31 @@ async function classifyFiles(list) {
 
 // ---- wiring -------------------------------------------------------------------
 
+/** DBSCAN over the set's own epsilon grid x a few min points; a cell click clusters with it. */
+function runSweep() {
+  clearSweep();
+  if (!state.set || state.scans.length < 2) return ($('sweep-status').textContent = 'Describe at least two scans first.');
+  try {
+    const truth = truthLabels();
+    const points = state.set.dbscanSweep(state.set.epsilonGrid(), Uint32Array.from([2, 3, 5, 8, 12]), truth);
+    const best = renderSweep($('sweep-table'), points, (eps, minPoints) => {
+      $('eps').value = eps;
+      $('minpts').value = String(minPoints);
+      cluster();
+    });
+    $('sweep-status').textContent = best
+      ? `Cells: clusters · inliers, shaded by S; best S ${best.score.toFixed(3)} at epsilon ${f32String(best.epsilon)}, min points ${best.min_points} (outlined). Click a cell to use it.`
+      : 'Cells: clusters · share of scans in one. Click a cell to use it (with labels.csv, cells are shaded by S).';
+  } catch (e) {
+    $('sweep-status').textContent = e.message;
+  }
+}
+
+function clearSweep() {
+  $('sweep-table').replaceChildren();
+  $('sweep-status').textContent = '';
+}
+
 function showMethod() {
   for (const div of document.querySelectorAll('[data-for]')) div.hidden = div.dataset.for !== $('method').value;
 }
@@ -608,6 +643,7 @@ async function main() {
     state.cutBy = 'categories';
     setCategories(Number($('categories').value));
   });
+  $('sweep').addEventListener('click', runSweep);
   $('export-csv').addEventListener('click', exportCsv);
   $('export-model').addEventListener('click', exportModel);
   $('import').addEventListener('change', (e) => e.target.files[0] && importFile(e.target.files[0]));

@@ -8,7 +8,7 @@ mod sweep;
 
 pub use ari::adjusted_rand_index;
 pub use confusion::{confusion, Confusion, Mapping};
-pub use sweep::{dbscan_sweep, SweepPoint};
+pub use sweep::{best_score, dbscan_sweep, epsilon_grid, SweepPoint, GRID_QUANTILES};
 
 use serde::{Deserialize, Serialize};
 

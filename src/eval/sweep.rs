@@ -1,32 +1,100 @@
 //! DBSCAN parameter sweep (paper Fig. 3): a grid of epsilon x c giving the
-//! inlier ratio, AR and S.
+//! number of clusters, the inlier ratio and, with ground truth, AR and S.
 
 use crate::cluster::{Dbscan, DbscanParams};
 use crate::distance::DistanceMatrix;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 
+/// DBSCAN at one (epsilon, c).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SweepPoint {
     pub epsilon: f32,
     pub min_points: usize,
     pub clusters: usize,
+    /// Scans in a cluster / all scans.
     pub inlier_ratio: f64,
-    pub ari: f64,
-    pub score: f64,
+    /// ARI over the inliers; `None` without ground truth.
+    pub ari: Option<f64>,
+    /// S = ARI * inlier ratio; `None` without ground truth.
+    pub score: Option<f64>,
 }
 
+/// Quantiles of the Delta between two different scans at which
+/// [`epsilon_grid`] puts epsilon: from pairs of near-duplicates up to the
+/// median pair. With k equal categories about 1/k of all pairs lie within
+/// one, so the useful epsilons of 2 to 20 categories fall inside.
+pub const GRID_QUANTILES: [f64; 12] = [
+    0.005, 0.01, 0.02, 0.03, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5,
+];
+
+/// Above this many pairs the quantiles are taken from an even sample of
+/// them (a sort of all 12.5 million pairs of 5,000 scans would need 50 MB
+/// more).
+const GRID_SAMPLE: usize = 1 << 20;
+
+/// Epsilons for a sweep when the user has no idea of the scale of Delta on
+/// their data: the [`GRID_QUANTILES`] of the Delta between two different
+/// scans, rounded to 3 significant digits (so they can be typed back as
+/// `--eps`), equal values once. Empty with fewer than two scans.
+pub fn epsilon_grid(matrix: &DistanceMatrix) -> Vec<f32> {
+    let n = matrix.n;
+    let pairs = n * n.saturating_sub(1) / 2;
+    if pairs == 0 {
+        return Vec::new();
+    }
+    let step = pairs.div_ceil(GRID_SAMPLE);
+    let mut values: Vec<f32> = (0..n)
+        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+        .step_by(step)
+        .map(|(i, j)| matrix.get(i, j))
+        .collect();
+    values.sort_unstable_by(f32::total_cmp);
+    let mut grid: Vec<f32> = GRID_QUANTILES
+        .iter()
+        .map(|q| {
+            let at = ((values.len() - 1) as f64 * q).round() as usize;
+            round_significant(values[at], 3)
+        })
+        .collect();
+    grid.dedup();
+    grid
+}
+
+/// `x` to `digits` significant digits (0 stays 0).
+fn round_significant(x: f32, digits: i32) -> f32 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let scale = 10f64.powi(digits - 1 - (x as f64).abs().log10().floor() as i32);
+    ((x as f64 * scale).round() / scale) as f32
+}
+
+/// DBSCAN at every (epsilon, c) of the grid, epsilon-major. `truth` (a class
+/// name per scan) adds AR and S.
 pub fn dbscan_sweep(
     matrix: &DistanceMatrix,
-    truth: &[String],
+    truth: Option<&[String]>,
     epsilons: &[f32],
     min_points: &[usize],
 ) -> Result<Vec<SweepPoint>> {
-    let mut out = Vec::new();
+    if epsilons.is_empty() || min_points.is_empty() {
+        return Err(Error::InvalidParameter(
+            "a sweep needs at least one epsilon and one min points".into(),
+        ));
+    }
+    let mut out = Vec::with_capacity(epsilons.len() * min_points.len());
     for &e in epsilons {
         for &c in min_points {
             let labels = Dbscan::fit(matrix, &DbscanParams::new(e, c))?;
-            let ev = super::evaluate(truth, &labels)?;
+            let inliers = labels.iter().filter(|&&l| l >= 0).count();
+            let (ari, score) = match truth {
+                Some(t) => {
+                    let ev = super::evaluate(t, &labels)?;
+                    (Some(ev.ari), Some(ev.score))
+                }
+                None => (None, None),
+            };
             out.push(SweepPoint {
                 epsilon: e,
                 min_points: c,
@@ -35,11 +103,111 @@ pub fn dbscan_sweep(
                     .copied()
                     .max()
                     .map_or(0, |m| (m + 1).max(0) as usize),
-                inlier_ratio: ev.inliers as f64 / ev.total.max(1) as f64,
-                ari: ev.ari,
-                score: ev.score,
+                inlier_ratio: inliers as f64 / labels.len().max(1) as f64,
+                ari,
+                score,
             });
         }
     }
     Ok(out)
+}
+
+/// The point with the highest S (the first of equals), if the sweep had
+/// ground truth.
+pub fn best_score(sweep: &[SweepPoint]) -> Option<&SweepPoint> {
+    sweep
+        .iter()
+        .filter(|p| p.score.is_some())
+        .fold(None, |best: Option<&SweepPoint>, p| match best {
+            Some(b) if b.score >= p.score => Some(b),
+            _ => Some(p),
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Scans on a line at these positions; Delta = distance along it.
+    fn line(xs: &[f32]) -> DistanceMatrix {
+        DistanceMatrix::from_fn(xs.len(), |i, j| (xs[i] - xs[j]).abs())
+    }
+
+    #[test]
+    fn rounding_keeps_three_significant_digits() {
+        assert_eq!(round_significant(0.123456, 3), 0.123);
+        assert_eq!(round_significant(12.3456, 3), 12.3);
+        assert_eq!(round_significant(0.0004567, 3), 0.000457);
+        assert_eq!(round_significant(0.0, 3), 0.0);
+    }
+
+    #[test]
+    fn the_grid_is_quantiles_of_pair_distances() {
+        // 0..=100 on a line: 5050 pairs; distance d occurs 101 - d times.
+        let xs: Vec<f32> = (0..=100).map(|i| i as f32).collect();
+        let grid = epsilon_grid(&line(&xs));
+        let mut all: Vec<f32> = (0..=100)
+            .flat_map(|i| (i + 1..=100).map(move |j| (j - i) as f32))
+            .collect();
+        all.sort_unstable_by(f32::total_cmp);
+        let mut expect: Vec<f32> = GRID_QUANTILES
+            .iter()
+            .map(|q| all[((all.len() - 1) as f64 * q).round() as usize])
+            .collect();
+        expect.dedup();
+        assert_eq!(grid, expect);
+        // The median pair is 30 apart: 2,494 of the 5,050 pairs are 1..=29
+        // apart (100 + 99 + ... + 72), 2,565 are 1..=30.
+        assert_eq!(grid.len(), 10);
+        assert_eq!(*grid.last().unwrap(), 30.0);
+        assert!(epsilon_grid(&line(&[1.0])).is_empty());
+        // Equal quantiles appear once.
+        assert_eq!(epsilon_grid(&line(&[0.0, 1.0])), vec![1.0]);
+    }
+
+    #[test]
+    fn sweep_counts_clusters_inliers_and_scores() {
+        // Two tight groups and one far scan.
+        let m = line(&[0.0, 0.1, 0.2, 5.0, 5.1, 5.2, 20.0]);
+        let truth: Vec<String> = ["a", "a", "a", "b", "b", "b", "c"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        let sweep = dbscan_sweep(&m, Some(&truth), &[0.1, 1.0, 100.0], &[1, 3]).unwrap();
+        let at = |e: f32, c: usize| {
+            sweep
+                .iter()
+                .find(|p| p.epsilon == e && p.min_points == c)
+                .unwrap()
+        };
+        // eps 1, c 3: the two groups, the far scan is noise.
+        let p = at(1.0, 3);
+        assert_eq!((p.clusters, p.ari), (2, Some(1.0)));
+        assert!((p.inlier_ratio - 6.0 / 7.0).abs() < 1e-12);
+        assert!((p.score.unwrap() - 6.0 / 7.0).abs() < 1e-12);
+        // eps 1, c 1: every scan is a core, the far one its own cluster.
+        assert_eq!((at(1.0, 1).clusters, at(1.0, 1).score), (3, Some(1.0)));
+        // eps 100: one cluster of all, ARI 0.
+        assert_eq!((at(100.0, 3).clusters, at(100.0, 3).ari), (1, Some(0.0)));
+        assert_eq!(sweep.len(), 6);
+        assert_eq!(best_score(&sweep).unwrap().min_points, 1);
+        // Without truth: the same clusters, no AR.
+        let plain = dbscan_sweep(&m, None, &[1.0], &[3]).unwrap();
+        assert_eq!(
+            (plain[0].clusters, plain[0].ari, plain[0].score),
+            (2, None, None)
+        );
+        assert!(best_score(&plain).is_none());
+    }
+
+    #[test]
+    fn bad_sweeps_are_errors() {
+        let m = line(&[0.0, 1.0]);
+        assert!(dbscan_sweep(&m, None, &[], &[2]).is_err());
+        assert!(dbscan_sweep(&m, None, &[1.0], &[]).is_err());
+        assert!(dbscan_sweep(&m, None, &[-1.0], &[2]).is_err());
+        assert!(dbscan_sweep(&m, None, &[1.0], &[0]).is_err());
+        let short = vec!["a".to_string()];
+        assert!(dbscan_sweep(&m, Some(&short), &[1.0], &[2]).is_err());
+    }
 }

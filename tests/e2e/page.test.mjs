@@ -178,6 +178,29 @@ test('the demo runs with no files and shows accuracy against its ground truth', 
   await h.page.screenshot({ path: join(ARTIFACTS, 'demo-indoor.png') });
 });
 
+test('the DBSCAN sweep shades cells by S and a click clusters with that cell', async () => {
+  await h.page.selectOption('#method', 'dbscan');
+  await h.page.click('#sweep');
+  const rows = await h.page.$$eval('#sweep-table tr', (trs) => trs.map((tr) => tr.children.length));
+  assert.ok(rows.length >= 4, `${rows.length} rows`);
+  assert.ok(rows.every((n) => n === 6), `cells per row: ${rows}`); // epsilon + 5 min points
+  assert.match(await h.page.textContent('#sweep-status'), /best S 0\.\d{3} at epsilon/);
+  const best = h.page.locator('#sweep-table td.best');
+  assert.equal(await best.count(), 1);
+  const [eps, minPoints, score] = await best.evaluate((td) => [td.dataset.eps, td.dataset.minPoints, Number(td.dataset.score)]);
+  const scores = await h.page.$$eval('#sweep-table td', (tds) => tds.map((td) => Number(td.dataset.score)));
+  assert.equal(Math.max(...scores), score);
+  await best.click();
+  assert.equal(await h.page.inputValue('#eps'), eps);
+  assert.equal(await h.page.inputValue('#minpts'), minPoints);
+  // The page's own evaluation of that clustering: S (or the ARI, when no
+  // scan is noise, for then S = ARI) is the cell's.
+  const text = await h.page.textContent('#accuracy');
+  assert.ok(text.includes(`S ${score.toFixed(3)}`) || (!text.includes(' S ') && text.includes(`ARI ${score.toFixed(3)}`)), `${text} vs S ${score}`);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'dbscan-sweep.png') });
+  await h.page.selectOption('#method', 'hkmeans');
+});
+
 test('a worker that dies mid-file is replaced, the file reported, the rest described', async () => {
   await h.page.evaluate(() => { window.placecat.crashOn = '000095.bin'; });
   await afterRun(h.page, () => h.page.setInputFiles('#files', realFiles));

@@ -107,6 +107,29 @@ fn simulated_demo_model_round_trip_and_classify() {
     let ev = DescriptorSet::evaluate(truth.clone(), &labels).unwrap();
     let acc = get(&ev, "accuracy").as_f64().unwrap();
     assert!((0.0..=1.0).contains(&acc));
+    // The DBSCAN sweep over the set's own grid: each point is what dbscan
+    // and evaluate give at its parameters.
+    let grid = set.epsilon_grid().unwrap().to_vec();
+    assert!(
+        grid.len() >= 2 && grid.windows(2).all(|w| w[0] < w[1]),
+        "{grid:?}"
+    );
+    let sweep = set
+        .dbscan_sweep(&grid, &[2, 3], Some(truth.clone()))
+        .unwrap();
+    let sweep = js_sys::Array::from(&sweep);
+    assert_eq!(sweep.length() as usize, 2 * grid.len());
+    for p in sweep.iter() {
+        let e = get(&p, "epsilon").as_f64().unwrap() as f32;
+        let c = get(&p, "min_points").as_f64().unwrap() as usize;
+        let db = set.dbscan(e, c).unwrap().to_vec();
+        let ev = DescriptorSet::evaluate(truth.clone(), &db).unwrap();
+        assert_eq!(get(&p, "score").as_f64(), get(&ev, "score").as_f64());
+        let clusters = db.iter().copied().max().unwrap_or(-1) + 1;
+        assert_eq!(get(&p, "clusters").as_f64(), Some(clusters as f64));
+    }
+    let plain = set.dbscan_sweep(&grid[..1], &[2], None).unwrap();
+    assert!(get(&js_sys::Array::from(&plain).get(0), "ari").is_null());
     let names = js_sys::JSON::parse(r#"{"0": "first", "1": "second"}"#).unwrap();
     let model = set.build_model(&labels, names).unwrap();
     let json = model.to_json().unwrap();
@@ -158,6 +181,13 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(e.contains("k must be at least 1"), "{e}");
     assert!(message(set.kmeans(2, "sideways", 0).err().unwrap()).contains("sideways"));
     assert!(message(set.dbscan(-1.0, 2).err().unwrap()).contains("epsilon"));
+    assert!(message(set.dbscan_sweep(&[], &[2], None).err().unwrap()).contains("at least one"));
+    assert!(message(
+        set.dbscan_sweep(&[0.5], &[2], Some(vec!["a".into()]))
+            .err()
+            .unwrap()
+    )
+    .contains("ground-truth"));
     assert!(message(Model::from_json("{\"format\": 1}").err().unwrap()).starts_with("model:"));
     assert!(message(Simulator::new("moon", 0, None, None).err().unwrap()).contains("moon"));
     let e = message(

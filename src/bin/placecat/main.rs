@@ -8,6 +8,9 @@
 //! - `placecat cluster DESCRIPTORS.json --method hkmeans (--threshold T | --categories K) --seed S -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method dbscan --eps E --min-points C -o OUT.json`
 //! - `placecat evaluate OUT.json --truth labels.csv`
+//! - `placecat sweep DESCRIPTORS.json [--truth labels.csv] [--eps E,...] [--min-points C,...] [-o OUT.csv]`
+//! - `placecat model DESCRIPTORS.json --names NAMES.csv -o MODEL.json`
+//! - `placecat classify MODEL.json INPUT... [-o OUT.csv]`
 //! - `placecat simulate --scene indoor|warehouse|outdoor --seed S [--scans N] [--buildings one|many] -o DIR`
 
 #[cfg(not(target_arch = "wasm32"))]

@@ -1,4 +1,4 @@
-//! `placecat cluster`, `placecat evaluate`, `placecat simulate`.
+//! `placecat cluster`, `placecat evaluate`, `placecat sweep`, `placecat simulate`.
 
 use super::describe::{csv_cells, DescriptorSet};
 use super::progress;
@@ -159,13 +159,22 @@ pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
         serde_json::from_value(v["files"].clone()).map_err(|e| Error::from(e).in_file(&name))?;
     let labels: Vec<i32> =
         serde_json::from_value(v["labels"].clone()).map_err(|e| Error::from(e).in_file(&name))?;
+    let t = truth_for(&files, truth)?;
+    let ev = placecat::eval::evaluate(&t, &labels)?;
+    println!("{}", serde_json::to_string_pretty(&ev)?);
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The ground-truth label of each file (matched by base name) from a
+/// `file,label` CSV; an error naming the CSV if a file has none.
+fn truth_for(files: &[impl AsRef<str>], truth: &Path) -> Result<Vec<String>> {
     let table: std::collections::HashMap<String, String> = read_truth(truth)?.into_iter().collect();
     let mut t = Vec::with_capacity(files.len());
     let mut missing = Vec::new();
-    for f in &files {
-        match table.get(&basename(f)) {
+    for f in files {
+        match table.get(&basename(f.as_ref())) {
             Some(l) => t.push(l.clone()),
-            None => missing.push(f.clone()),
+            None => missing.push(f.as_ref().to_string()),
         }
     }
     if !missing.is_empty() {
@@ -176,8 +185,75 @@ pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
         ))
         .in_file(truth.display().to_string()));
     }
-    let ev = placecat::eval::evaluate(&t, &labels)?;
-    println!("{}", serde_json::to_string_pretty(&ev)?);
+    Ok(t)
+}
+
+/// Options of `placecat sweep`.
+#[derive(clap::Args)]
+pub struct SweepArgs {
+    /// `file,label` CSV: adds the ARI and S = ARI x inliers / all.
+    #[arg(long)]
+    pub truth: Option<std::path::PathBuf>,
+    /// Epsilons, comma-separated (default: quantiles 0.5 % to 50 % of the
+    /// Delta between two different scans, 3 significant digits).
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    pub eps: Vec<f32>,
+    /// Min points (the scan itself included), comma-separated.
+    #[arg(long = "min-points", value_delimiter = ',', default_values_t = [2usize, 3, 5, 8, 12])]
+    pub min_points: Vec<usize>,
+}
+
+/// `placecat sweep`: DBSCAN over a grid of epsilon x min points, as CSV
+/// `epsilon,min_points,clusters,inlier_ratio,ari,score` (the last two empty
+/// without `--truth`); the best S goes to stderr.
+pub fn sweep(descriptors: &Path, a: &SweepArgs, output: Option<&Path>) -> Result<ExitCode> {
+    let set = DescriptorSet::load(descriptors)?;
+    let files: Vec<&str> = set.files.iter().map(|f| f.name.as_str()).collect();
+    let truth = a
+        .truth
+        .as_deref()
+        .map(|t| truth_for(&files, t))
+        .transpose()?;
+    let ds: Vec<Descriptor> = set.files.iter().map(|f| f.descriptor.clone()).collect();
+    if ds.len() < 2 {
+        return Err(Error::InvalidParameter(format!(
+            "{}: a sweep needs at least two described files, it has {}",
+            descriptors.display(),
+            ds.len()
+        )));
+    }
+    let m = Space::new(&ds, DistanceOptions::from(&set.params))?.matrix();
+    let eps = if a.eps.is_empty() {
+        placecat::eval::epsilon_grid(&m)
+    } else {
+        a.eps.clone()
+    };
+    let points = placecat::eval::dbscan_sweep(&m, truth.as_deref(), &eps, &a.min_points)?;
+    let cell = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.4}"));
+    let mut out = String::from("epsilon,min_points,clusters,inlier_ratio,ari,score\n");
+    for p in &points {
+        out += &format!(
+            "{},{},{},{:.4},{},{}\n",
+            p.epsilon,
+            p.min_points,
+            p.clusters,
+            p.inlier_ratio,
+            cell(p.ari),
+            cell(p.score)
+        );
+    }
+    super::write_out(output, &out)?;
+    if let Some(b) = placecat::eval::best_score(&points) {
+        eprintln!(
+            "best S {:.3} at --eps {} --min-points {} ({} clusters, {:.0} % inliers, ARI {:.3})",
+            b.score.unwrap_or(0.0),
+            b.epsilon,
+            b.min_points,
+            b.clusters,
+            100.0 * b.inlier_ratio,
+            b.ari.unwrap_or(0.0)
+        );
+    }
     Ok(ExitCode::SUCCESS)
 }
 

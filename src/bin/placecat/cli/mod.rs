@@ -60,6 +60,16 @@ enum Command {
         #[arg(long)]
         truth: PathBuf,
     },
+    /// DBSCAN over a grid of epsilon x min points (paper Fig. 3): CSV
+    /// epsilon,min_points,clusters,inlier_ratio,ari,score.
+    Sweep {
+        descriptors: PathBuf,
+        #[command(flatten)]
+        args: cluster::SweepArgs,
+        /// CSV file to write (default: stdout).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
     /// Simulate lidar scans with ground truth: PLY scans, poses, labels.csv.
     Simulate {
         /// indoor, warehouse, outdoor.
@@ -145,6 +155,11 @@ pub fn main() -> ExitCode {
             output,
         } => cluster::cluster(&descriptors, &args, &output),
         Command::Evaluate { clusters, truth } => cluster::evaluate(&clusters, &truth),
+        Command::Sweep {
+            descriptors,
+            args,
+            output,
+        } => cluster::sweep(&descriptors, &args, output.as_deref()),
         Command::Simulate {
             scene,
             seed,
