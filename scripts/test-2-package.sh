@@ -32,6 +32,9 @@ assert.notEqual(labels[0], labels[2]);
 const cut = set.hkmeans(0).cutK(2).labels;
 assert.equal(cut.length, 4);
 assert.ok(cut[0] === cut[1] && cut[2] === cut[3] && cut[0] !== cut[2], `hkmeans cut into 2: ${cut}`);
+// The DBSCAN sweep with ground truth: some cell puts room and street apart.
+const sweep = set.dbscanSweep(set.epsilonGrid(), [2], ['room', 'room', 'street', 'street']);
+assert.ok(sweep.some((p) => p.clusters === 2 && p.score === 1), `sweep: ${JSON.stringify(sweep)}`);
 assert.throws(() => set.kmeans(0, 'stride', 0), /k must be at least 1/);
 console.log(`placecat ${version()} from the packed tarball: labels ${labels.join(',')}`);
 JS

@@ -159,7 +159,7 @@ pub fn describe_scan(
     name: &str,
     params: JsValue,
     preset: Option<String>,
-    preview_points: Option<usize>,
+    #[wasm_bindgen(js_name = previewPoints)] preview_points: Option<usize>,
 ) -> WasmResult<DescribedScan> {
     let p = params_from_js(params, preset.as_deref())?;
     let c = io::read_scan_named(bytes, name, &ReadLimits::default()).map_err(js_err)?;
@@ -319,13 +319,18 @@ impl DescriptorSet {
     }
     /// DBSCAN (Delta <= eps are neighbours; minPoints counts the scan itself).
     /// Labels as Int32Array, -1 for noise.
-    pub fn dbscan(&mut self, eps: f32, min_points: usize) -> WasmResult<js_sys::Int32Array> {
+    pub fn dbscan(
+        &mut self,
+        eps: f32,
+        #[wasm_bindgen(js_name = minPoints)] min_points: usize,
+    ) -> WasmResult<js_sys::Int32Array> {
         let m = self.matrix()?;
         let labels = Dbscan::fit(m, &DbscanParams::new(eps, min_points)).map_err(js_err)?;
         Ok(js_sys::Int32Array::from(&labels[..]))
     }
     /// Epsilons worth sweeping on this set: quantiles 0.5 % to 50 % of the
-    /// Delta between two different scans, 3 significant digits, ascending.
+    /// Delta between two different scans, rounded up to 3 significant
+    /// digits, ascending.
     #[wasm_bindgen(js_name = epsilonGrid)]
     pub fn epsilon_grid(&mut self) -> WasmResult<js_sys::Float32Array> {
         let grid = crate::eval::epsilon_grid(self.matrix()?);
@@ -335,11 +340,14 @@ impl DescriptorSet {
     /// `[{epsilon, min_points, clusters, inlier_ratio, ari, score}, ...]`.
     /// `truth` (a class name per scan) adds `ari` and `score` (S = ARI x
     /// inliers / all); without it they are `null`.
-    #[wasm_bindgen(js_name = dbscanSweep)]
+    #[wasm_bindgen(
+        js_name = dbscanSweep,
+        unchecked_return_type = "Array<{epsilon: number, min_points: number, clusters: number, inlier_ratio: number, ari: number | null, score: number | null}>"
+    )]
     pub fn dbscan_sweep(
         &mut self,
         epsilons: &[f32],
-        min_points: &[u32],
+        #[wasm_bindgen(js_name = minPoints)] min_points: &[u32],
         truth: Option<Vec<String>>,
     ) -> WasmResult<JsValue> {
         let cs: Vec<usize> = min_points.iter().map(|&c| c as usize).collect();
@@ -539,7 +547,10 @@ impl Model {
 
 /// Parse a poses file (KITTI, TUM or CSV): `{format, poses: [{name, time, position, yaw}]}`.
 #[wasm_bindgen(js_name = parsePoses)]
-pub fn parse_poses(text: &str, file_name: Option<String>) -> WasmResult<JsValue> {
+pub fn parse_poses(
+    text: &str,
+    #[wasm_bindgen(js_name = fileName)] file_name: Option<String>,
+) -> WasmResult<JsValue> {
     let p = io::poses::parse(text)
         .map_err(|e| js_err(e.in_file(file_name.unwrap_or_else(|| "poses".into()))))?;
     to_js(&p)

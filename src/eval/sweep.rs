@@ -35,8 +35,9 @@ const GRID_SAMPLE: usize = 1 << 20;
 
 /// Epsilons for a sweep when the user has no idea of the scale of Delta on
 /// their data: the [`GRID_QUANTILES`] of the Delta between two different
-/// scans, rounded to 3 significant digits (so they can be typed back as
-/// `--eps`), equal values once. Empty with fewer than two scans.
+/// scans, rounded up to 3 significant digits (short enough to type back as
+/// `--eps`; up, so the pair at the quantile stays within epsilon), equal
+/// values once. Empty with fewer than two scans.
 pub fn epsilon_grid(matrix: &DistanceMatrix) -> Vec<f32> {
     let n = matrix.n;
     let pairs = n * n.saturating_sub(1) / 2;
@@ -54,20 +55,22 @@ pub fn epsilon_grid(matrix: &DistanceMatrix) -> Vec<f32> {
         .iter()
         .map(|q| {
             let at = ((values.len() - 1) as f64 * q).round() as usize;
-            round_significant(values[at], 3)
+            ceil_significant(values[at], 3)
         })
         .collect();
     grid.dedup();
     grid
 }
 
-/// `x` to `digits` significant digits (0 stays 0).
-fn round_significant(x: f32, digits: i32) -> f32 {
+/// The smallest number of `digits` significant digits that is >= `x`, as
+/// the nearest f32 (which is still >= `x`: rounding to f32 is monotone and
+/// `x` is an f32). 0 stays 0.
+fn ceil_significant(x: f32, digits: i32) -> f32 {
     if x == 0.0 || !x.is_finite() {
         return x;
     }
     let scale = 10f64.powi(digits - 1 - (x as f64).abs().log10().floor() as i32);
-    ((x as f64 * scale).round() / scale) as f32
+    ((x as f64 * scale).ceil() / scale) as f32
 }
 
 /// DBSCAN at every (epsilon, c) of the grid, epsilon-major. `truth` (a class
@@ -134,11 +137,17 @@ mod tests {
     }
 
     #[test]
-    fn rounding_keeps_three_significant_digits() {
-        assert_eq!(round_significant(0.123456, 3), 0.123);
-        assert_eq!(round_significant(12.3456, 3), 12.3);
-        assert_eq!(round_significant(0.0004567, 3), 0.000457);
-        assert_eq!(round_significant(0.0, 3), 0.0);
+    fn rounding_up_keeps_three_significant_digits() {
+        assert_eq!(ceil_significant(0.123456, 3), 0.124);
+        assert_eq!(ceil_significant(12.3456, 3), 12.4);
+        assert_eq!(ceil_significant(0.0004561, 3), 0.000457);
+        assert_eq!(ceil_significant(0.5, 3), 0.5);
+        assert_eq!(ceil_significant(250.0, 3), 250.0);
+        assert_eq!(ceil_significant(0.0, 3), 0.0);
+        // Never below the value: the pair at a quantile is a neighbour.
+        for x in [0.27901f32, 0.1 + 1e-7, 2.71830, 1e-6 + 3e-13] {
+            assert!(ceil_significant(x, 3) >= x, "{x}");
+        }
     }
 
     #[test]
@@ -163,6 +172,27 @@ mod tests {
         assert!(epsilon_grid(&line(&[1.0])).is_empty());
         // Equal quantiles appear once.
         assert_eq!(epsilon_grid(&line(&[0.0, 1.0])), vec![1.0]);
+    }
+
+    #[test]
+    fn each_grid_epsilon_takes_in_the_pairs_up_to_its_quantile() {
+        // Positions with no round distances, so rounding matters.
+        let xs: Vec<f32> = (0..40).map(|i| 0.0173 * (i as f32).powf(1.37)).collect();
+        let m = line(&xs);
+        let grid = epsilon_grid(&m);
+        let mut all: Vec<f32> = (0..40)
+            .flat_map(|i| (i + 1..40).map(move |j| (i, j)))
+            .map(|(i, j)| m.get(i, j))
+            .collect();
+        all.sort_unstable_by(f32::total_cmp);
+        for q in GRID_QUANTILES {
+            let at = ((all.len() - 1) as f64 * q).round() as usize;
+            let e = *grid.iter().find(|&&e| e >= all[at]).unwrap();
+            // The grid's epsilon for this quantile is the next at or above
+            // the quantile's pair, within 1 % (3 significant digits).
+            assert!(e <= all[at] * 1.01, "q {q}: {e} for {}", all[at]);
+            assert!(all.iter().filter(|&&d| d <= e).count() > at);
+        }
     }
 
     #[test]

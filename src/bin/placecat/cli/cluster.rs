@@ -195,7 +195,7 @@ pub struct SweepArgs {
     #[arg(long)]
     pub truth: Option<std::path::PathBuf>,
     /// Epsilons, comma-separated (default: quantiles 0.5 % to 50 % of the
-    /// Delta between two different scans, 3 significant digits).
+    /// Delta between two different scans, rounded up to 3 significant digits).
     #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
     pub eps: Vec<f32>,
     /// Min points (the scan itself included), comma-separated.
