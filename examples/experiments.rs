@@ -543,7 +543,7 @@ fn main() {
     // Delta between scans of one kind is mostly below 0.5 (section 1's
     // diameters), so the grid covers 0.025..0.5.
     let eps: Vec<f32> = (1..=20).map(|i| i as f32 * 0.025).collect();
-    let cs = [2usize, 3, 5, 8, 12];
+    let cs = placecat::eval::SWEEP_MIN_POINTS;
     let sweep = dbscan_sweep(&r.matrix, Some(&indoor.truth), &eps, &cs).unwrap();
     writeln!(out, "## 2. DBSCAN sweep (paper Fig. 3)\n\nS = ARI(inliers) x inliers / all. Paper: best S 0.70. Rows epsilon, columns c (min points, the scan itself counted). `placecat sweep DESCRIPTORS.json --truth labels.csv` gives the same figures for any described set, by default on a grid from quantiles of its own Delta.\n").unwrap();
     writeln!(

@@ -427,6 +427,31 @@ function renderAccuracy() {
   $('accuracy').textContent = `Against ground truth: accuracy ${(100 * ev.accuracy).toFixed(1)} %, ARI ${ev.ari.toFixed(3)}${ev.inliers < ev.total ? `, S ${ev.score.toFixed(3)}` : ''}`;
 }
 
+/** DBSCAN over the set's own epsilon grid x a few min points; a cell click clusters with it. */
+function runSweep() {
+  clearSweep();
+  if (!state.set || state.scans.length < 2) return ($('sweep-status').textContent = 'Describe at least two scans first.');
+  try {
+    const truth = truthLabels();
+    const points = state.set.dbscanSweep(state.set.epsilonGrid(), Uint32Array.from([2, 3, 5, 8, 12]) /* placecat sweep's default */, truth);
+    const best = renderSweep($('sweep-table'), points, (eps, minPoints) => {
+      $('eps').value = eps;
+      $('minpts').value = String(minPoints);
+      cluster();
+    });
+    $('sweep-status').textContent = best
+      ? `Cells: clusters · inliers, shaded by S; best S ${best.score.toFixed(3)} at epsilon ${f32String(best.epsilon)}, min points ${best.min_points} (outlined). Click a cell to use it.`
+      : 'Cells: clusters · share of scans in one. Click a cell to use it (with labels.csv, cells are shaded by S).';
+  } catch (e) {
+    $('sweep-status').textContent = e.message;
+  }
+}
+
+function clearSweep() {
+  $('sweep-table').replaceChildren();
+  $('sweep-status').textContent = '';
+}
+
 function highlight(i) {
   dendrogram.setHighlight(i);
   map.setHighlight(i);
@@ -562,31 +587,6 @@ async function classifyFiles(list) {
 }
 
 // ---- wiring -------------------------------------------------------------------
-
-/** DBSCAN over the set's own epsilon grid x a few min points; a cell click clusters with it. */
-function runSweep() {
-  clearSweep();
-  if (!state.set || state.scans.length < 2) return ($('sweep-status').textContent = 'Describe at least two scans first.');
-  try {
-    const truth = truthLabels();
-    const points = state.set.dbscanSweep(state.set.epsilonGrid(), Uint32Array.from([2, 3, 5, 8, 12]), truth);
-    const best = renderSweep($('sweep-table'), points, (eps, minPoints) => {
-      $('eps').value = eps;
-      $('minpts').value = String(minPoints);
-      cluster();
-    });
-    $('sweep-status').textContent = best
-      ? `Cells: clusters · inliers, shaded by S; best S ${best.score.toFixed(3)} at epsilon ${f32String(best.epsilon)}, min points ${best.min_points} (outlined). Click a cell to use it.`
-      : 'Cells: clusters · share of scans in one. Click a cell to use it (with labels.csv, cells are shaded by S).';
-  } catch (e) {
-    $('sweep-status').textContent = e.message;
-  }
-}
-
-function clearSweep() {
-  $('sweep-table').replaceChildren();
-  $('sweep-status').textContent = '';
-}
 
 function showMethod() {
   for (const div of document.querySelectorAll('[data-for]')) div.hidden = div.dataset.for !== $('method').value;

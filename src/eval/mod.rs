@@ -8,7 +8,9 @@ mod sweep;
 
 pub use ari::adjusted_rand_index;
 pub use confusion::{confusion, Confusion, Mapping};
-pub use sweep::{best_score, dbscan_sweep, epsilon_grid, SweepPoint, GRID_QUANTILES};
+pub use sweep::{
+    best_score, dbscan_sweep, epsilon_grid, SweepPoint, GRID_QUANTILES, SWEEP_MIN_POINTS,
+};
 
 use serde::{Deserialize, Serialize};
 

@@ -20,6 +20,10 @@ pub struct SweepPoint {
     pub score: Option<f64>,
 }
 
+/// Min points (the scan itself included) a sweep tries unless told: the
+/// paper's Fig. 3 range, from pairs to groups of a dozen scans.
+pub const SWEEP_MIN_POINTS: [usize; 5] = [2, 3, 5, 8, 12];
+
 /// Quantiles of the Delta between two different scans at which
 /// [`epsilon_grid`] puts epsilon: from pairs of near-duplicates up to the
 /// median pair. With k equal categories about 1/k of all pairs lie within

@@ -199,7 +199,7 @@ pub struct SweepArgs {
     #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
     pub eps: Vec<f32>,
     /// Min points (the scan itself included), comma-separated.
-    #[arg(long = "min-points", value_delimiter = ',', default_values_t = [2usize, 3, 5, 8, 12])]
+    #[arg(long = "min-points", value_delimiter = ',', default_values_t = placecat::eval::SWEEP_MIN_POINTS)]
     pub min_points: Vec<usize>,
 }
 
