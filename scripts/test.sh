@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `npm test`: every test. Rust (unit, integration, CLI), lint, then the wasm
+# `npm test`: every test. Rust (unit, integration, CLI), lint, docs, then the wasm
 # build in headless Chromium and in Node, the npm package consumption test,
 # and the browser end-to-end tests.
 set -euo pipefail
@@ -14,6 +14,9 @@ cargo fmt --check
 step "cargo clippy (native, and wasm32 with the wasm tests)"
 cargo clippy --all-targets --release -- -D warnings
 cargo clippy --target wasm32-unknown-unknown --no-default-features --release --lib --test web --test node -- -D warnings
+
+step "cargo doc (the crate's API documentation, broken links are errors)"
+RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib
 
 step "Rust tests"
 cargo test --release

@@ -5,6 +5,6 @@ mod algorithm;
 mod hyperparams;
 mod tree;
 
-pub use algorithm::HierarchicalKMeans;
+pub use algorithm::{HierarchicalKMeans, EXACT_DIAMETER_LIMIT};
 pub use hyperparams::HkMeansParams;
 pub use tree::{Cut, Tree, TreeNode};
