@@ -10,6 +10,78 @@
 //! ```
 //!
 //! The core knows nothing of the browser; `wasm` holds the JS boundary.
+//!
+//! ## Example
+//!
+//! From files on disk to named categories and a model that classifies new
+//! scans (the same code is in the README, which a test keeps in step):
+//!
+//! ```rust
+//! use placecat::cluster::{hkmeans::HkMeansParams, HierarchicalKMeans, Space};
+//! use placecat::io::{read_path, write, ReadLimits};
+//! use placecat::model::LabelledModel;
+//! use placecat::sim::{SceneKind, SimParams, Simulation};
+//! use placecat::{describe, DescriptorParams, DistanceOptions};
+//!
+//! fn main() -> placecat::Result<()> {
+//!     // Scans on disk with ground truth: 4 simulated scans of each indoor kind,
+//!     // written as binary PLY (your own PLY / PCD / KITTI .bin files read the same).
+//!     let dir = std::env::temp_dir().join(format!("placecat-doc-{}", std::process::id()));
+//!     std::fs::create_dir_all(&dir)?;
+//!     let mut sim = SimParams::new(SceneKind::Indoor, 1);
+//!     sim.scans = 4;
+//!     let sim = Simulation::new(&sim)?;
+//!     let mut files = Vec::new();
+//!     let mut truth = Vec::new();
+//!     for i in 0..sim.len() {
+//!         let scan = sim.scan(i);
+//!         let path = dir.join(&scan.name);
+//!         std::fs::write(
+//!             &path,
+//!             write::ply(&scan.points, write::PlyEncoding::BinaryLittleEndian, false),
+//!         )?;
+//!         files.push(path);
+//!         truth.push(scan.label);
+//!     }
+//!
+//!     // Read and describe each scan (the paper's indoor parameters).
+//!     let params = DescriptorParams::indoor();
+//!     let mut descriptors = Vec::new();
+//!     for f in &files {
+//!         let cloud = read_path(f, &ReadLimits::default())?; // errors name the file
+//!         descriptors.push(describe(&cloud.points, &params)?);
+//!     }
+//!
+//!     // Delta between every pair, then hierarchical k-means++: one tree, cut anywhere.
+//!     let space = Space::new(&descriptors, DistanceOptions::from(&params))?;
+//!     let tree = HierarchicalKMeans::fit(&space, &space.matrix(), &HkMeansParams::new(0))?;
+//!     let cut = tree.cut_k(5)?; // or tree.cut(threshold)
+//!     let ev = placecat::eval::evaluate(&truth, &cut.labels)?;
+//!     println!("accuracy {:.3}, ARI {:.3}", ev.accuracy, ev.ari);
+//!
+//!     // Name the categories (here after the ground truth), save the model, and
+//!     // classify a scan with it.
+//!     let names: Vec<(i32, String)> = ev
+//!         .confusion
+//!         .cluster_class
+//!         .iter()
+//!         .filter_map(|(label, class)| Some((*label, class.clone()?)))
+//!         .collect();
+//!     let model = LabelledModel::build(&params, &descriptors, &cut.labels, &names)?;
+//!     std::fs::write(dir.join("model.json"), model.to_json()?)?;
+//!     let model = LabelledModel::from_json(&std::fs::read_to_string(dir.join("model.json"))?)?;
+//!     let answer = model.classify(&descriptors[0])?;
+//!     println!(
+//!         "{}: {} (Delta {:.3})",
+//!         files[0].display(),
+//!         answer.name,
+//!         answer.distance
+//!     );
+//!     assert_eq!(answer.name, truth[0]);
+//!     std::fs::remove_dir_all(&dir)?;
+//!     Ok(())
+//! }
+//! ```
 
 pub mod cloud;
 pub mod cluster;
