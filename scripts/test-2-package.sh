@@ -39,3 +39,15 @@ assert.throws(() => set.kmeans(0, 'stride', 0), /k must be at least 1/);
 console.log(`placecat ${version()} from the packed tarball: labels ${labels.join(',')}`);
 JS
 node consume.mjs "$root/../shared/data/real"
+
+# The README's Node example, verbatim, beside the files it names: docs that run.
+real="$root/../shared/data/real"
+ln -s "$real"/pcl_room/room_scan1.pcd "$real"/pcl_room/room_scan2.pcd \
+  "$real"/velodyne_pair/251370668.pcd "$real"/velodyne_pair/251371071.pcd .
+node -e '
+const text = require("fs").readFileSync(process.argv[1], "utf8");
+const block = text.split("```js\n")[1].split("```")[0];
+require("fs").writeFileSync("readme-example.mjs", block);
+' "$root/README.md"
+echo "--- the README's Node example"
+node readme-example.mjs
