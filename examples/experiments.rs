@@ -13,6 +13,7 @@ use placecat::descriptor::{Metric, Normalisation};
 use placecat::eval::{best_score, dbscan_sweep, evaluate};
 use placecat::sim::{SceneKind, SimParams, Simulation};
 use placecat::*;
+use rayon::prelude::*;
 use std::fmt::Write;
 
 struct Set {
@@ -26,23 +27,23 @@ fn simulate(scene: SceneKind, seed: u64, params: &DescriptorParams) -> Set {
 
 fn simulate_with(sim_params: &SimParams, params: &DescriptorParams) -> Set {
     let sim = Simulation::new(sim_params).unwrap();
-    let mut set = Set {
-        truth: vec![],
-        descriptors: vec![],
-    };
-    for i in 0..sim.len() {
-        let s = sim.scan(i);
-        set.descriptors.push(describe(&s.points, params).unwrap());
-        set.truth.push(s.label);
-    }
-    set
+    // Ray casting and describing are most of the report's time; each scan
+    // has its own seed, so doing them in parallel changes no figure.
+    let (descriptors, truth) = (0..sim.len())
+        .into_par_iter()
+        .map(|i| {
+            let s = sim.scan(i);
+            (describe(&s.points, params).unwrap(), s.label)
+        })
+        .unzip();
+    Set { truth, descriptors }
 }
 
 fn describe_set(scans: &[(String, String, Vec<[f32; 3]>)], params: &DescriptorParams) -> Set {
     Set {
         truth: scans.iter().map(|s| s.1.clone()).collect(),
         descriptors: scans
-            .iter()
+            .par_iter()
             .map(|s| describe(&s.2, params).unwrap())
             .collect(),
     }
