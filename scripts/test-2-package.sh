@@ -51,3 +51,83 @@ require("fs").writeFileSync("readme-example.mjs", block);
 ' "$root/README.md"
 echo "--- the README's Node example"
 node readme-example.mjs
+
+# The .d.ts promises what the objects hold: every interface the API returns
+# has exactly the keys of the object that comes back, and null (not
+# undefined) where a value may be missing.
+cat > shapes.mjs <<'JS'
+import { readFileSync } from 'node:fs';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import * as pc from 'placecat';
+
+const dts = readFileSync(createRequire(import.meta.url).resolve('placecat/package.json').replace(/package\.json$/, 'web/placecat.d.ts'), 'utf8');
+const declared = (name) => {
+  const body = dts.match(new RegExp(`export interface ${name} \\{([^}]*)\\}`))?.[1];
+  assert.ok(body, `interface ${name} in the .d.ts`);
+  return body.replace(/\/\*\*[\s\S]*?\*\//g, '').split('\n').map((l) => l.trim().match(/^(\w+)\??:/)?.[1]).filter(Boolean).sort();
+};
+const same = (name, obj) => assert.deepEqual(Object.keys(obj).sort(), declared(name), name);
+
+const real = process.argv[2];
+const set = new pc.DescriptorSet(undefined, 'indoor');
+const scans = ['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd', 'velodyne_pair/251370668.pcd'].map((f) => pc.describeScan(readFileSync(`${real}/${f}`), f, undefined, 'indoor', 100));
+for (const s of scans) set.add(s);
+same('Summary', scans[0].summary());
+same('DescriptorParams', pc.presetParams('outdoor'));
+same('DescriptorParams', set.params());
+same('KMeansResult', set.kmeans(2, 'stride', 0));
+const tree = set.hkmeans(0);
+same('Cut', tree.cutK(2));
+const nodes = tree.nodes();
+same('TreeNode', nodes[0]);
+assert.equal(nodes[0].parent, null, 'the root has parent null');
+const ev = pc.DescriptorSet.evaluate(['room', 'room', 'street'], tree.cutK(2).labels);
+same('Evaluation', ev);
+same('Confusion', ev.confusion);
+const sweep = set.dbscanSweep([0.5], [2]);
+same('SweepPoint', sweep[0]);
+assert.equal(sweep[0].ari, null, 'no truth: ari is null');
+const model = set.buildModel(Int32Array.from(tree.cutK(2).labels), [[0, 'a'], [1, 'b']]);
+same('Classification', model.classify(scans[0]));
+const poses = pc.parsePoses('a.pcd,1,2\nb.pcd,3,4\n', 'poses.csv');
+same('Poses', poses);
+same('Pose', poses.poses[0]);
+assert.equal(poses.poses[0].time, null, 'a CSV pose has time null');
+console.log('the .d.ts interfaces match the objects returned');
+JS
+node shapes.mjs "$real"
+
+# And a TypeScript user's code compiles against them in strict mode
+# (wasm-bindgen's classes declare [Symbol.dispose]: lib esnext.disposable; its
+# init() takes WebAssembly types: lib dom).
+cat > typed.ts <<'TS'
+import { DescriptorSet, Simulator, presetParams, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
+const params: Required<DescriptorParams> = presetParams('indoor');
+const set = new DescriptorSet({ voxel_size: params.voxel_size }, 'indoor');
+const cut: Cut = set.hkmeans(0).cutK(2);
+const ev: Evaluation = DescriptorSet.evaluate(['a'], cut.labels);
+const best: SweepPoint | undefined = set.dbscanSweep(set.epsilonGrid(), [2]).find((p) => (p.score ?? 0) > 0.5);
+const firstName: string | null = ev.confusion.cluster_class[0][1];
+const radius: number = set.buildModel(Int32Array.from(cut.labels), { 0: 'room' }).categories()[0].radius;
+const km = set.kmeans(2, 'stride', 0).labels.length + new Simulator('indoor', 1).length;
+console.log(cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km);
+TS
+echo "--- no public method returns or takes 'any' (the raw wasm exports aside)"
+if grep -vE '^\s*readonly [A-Za-z_]+: \(' node_modules/placecat/web/placecat.d.ts | grep -nE ': any\b'; then
+  echo "the .d.ts above leaves a public type as any"; exit 1
+fi
+echo "--- tsc --strict on a TypeScript consumer"
+tsc() { "$root/node_modules/.bin/tsc" --noEmit --strict --target es2022 --lib es2022,esnext.disposable,dom --module nodenext --moduleResolution nodenext "$@"; }
+tsc typed.ts
+# ... and a typo in a seeding or a result field does not.
+cat > typo.ts <<'TS'
+import { DescriptorSet } from 'placecat';
+const set = new DescriptorSet(undefined, 'indoor');
+set.kmeans(2, 'strided', 0);
+console.log(set.hkmeans(0).cutK(2).threshhold);
+TS
+if out=$(tsc typo.ts); then echo "typo.ts compiled"; exit 1; fi
+echo "$out" | grep -q "typo.ts(3,15): error TS2345" || { echo "$out"; exit 1; }
+echo "$out" | grep -q "typo.ts(4,36): error TS2551" || { echo "$out"; exit 1; }
+echo "typo.ts is rejected: $(echo "$out" | grep -c error) errors"

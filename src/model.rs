@@ -40,6 +40,7 @@ pub struct LabelledModel {
 
 /// The answer for one scan.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Classification {
     pub name: String,
     pub label: i32,

@@ -33,6 +33,14 @@ fn from_js<T: serde::de::DeserializeOwned>(v: JsValue, what: &str) -> WasmResult
     serde_wasm_bindgen::from_value(v).map_err(|e| JsError::new(&format!("{what}: {e}")))
 }
 
+#[wasm_bindgen(typescript_custom_section)]
+const TS_NAMES: &'static str = r#"
+/** A parameter preset (paper Tab. II: indoor, outdoor; DESIGN Sec. 2b: indoor_bands; the public C++ code's settings: perception_oru). */
+export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru";
+/** k-means seeding: random scans, stride ("deterministic": scan i*n/k), or k-means++. */
+export type Seeding = "random" | "stride" | "deterministic" | "plusplus";
+"#;
+
 #[wasm_bindgen(start)]
 fn start() {
     console_error_panic_hook::set_once();
@@ -46,16 +54,22 @@ pub fn version() -> String {
 
 /// Descriptor parameters of a preset (`indoor`, `outdoor`, `indoor_bands`,
 /// `perception_oru`) as a plain object whose fields can be changed.
-#[wasm_bindgen(js_name = presetParams)]
-pub fn preset_params(name: &str) -> WasmResult<JsValue> {
+#[wasm_bindgen(js_name = presetParams, unchecked_return_type = "Required<DescriptorParams>")]
+pub fn preset_params(
+    #[wasm_bindgen(unchecked_param_type = "Preset")] name: &str,
+) -> WasmResult<JsValue> {
     to_js(&DescriptorParams::preset(name).map_err(js_err)?)
 }
 
 /// Parameters from a (possibly partial) object: missing fields take the
 /// values of `preset` (default `indoor`). Throws on unknown fields and
 /// invalid values; returns the complete, validated parameters.
-#[wasm_bindgen(js_name = validateParams)]
-pub fn validate_params(params: JsValue, preset: Option<String>) -> WasmResult<JsValue> {
+#[wasm_bindgen(js_name = validateParams, unchecked_return_type = "Required<DescriptorParams>")]
+pub fn validate_params(
+    #[wasm_bindgen(unchecked_param_type = "Partial<DescriptorParams> | undefined | null")]
+    params: JsValue,
+    preset: Option<String>,
+) -> WasmResult<JsValue> {
     to_js(&params_from_js(params, preset.as_deref())?)
 }
 
@@ -137,6 +151,7 @@ impl DescribedScan {
         self.format.to_string()
     }
     /// `{points, dropped, voxels, sparse_voxels, spherical, planar, linear, in_range, alignments, unreliable}`.
+    #[wasm_bindgen(unchecked_return_type = "Summary")]
     pub fn summary(&self) -> WasmResult<JsValue> {
         to_js(&self.descriptor.summary)
     }
@@ -157,6 +172,7 @@ impl DescribedScan {
 pub fn describe_scan(
     bytes: &[u8],
     name: &str,
+    #[wasm_bindgen(unchecked_param_type = "Partial<DescriptorParams> | undefined | null")]
     params: JsValue,
     preset: Option<String>,
     #[wasm_bindgen(js_name = previewPoints)] preview_points: Option<usize>,
@@ -255,7 +271,11 @@ impl DescriptorSet {
 impl DescriptorSet {
     /// An empty set for descriptors made with `params` (partial object ok).
     #[wasm_bindgen(constructor)]
-    pub fn new(params: JsValue, preset: Option<String>) -> WasmResult<DescriptorSet> {
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "Partial<DescriptorParams> | undefined | null")]
+        params: JsValue,
+        preset: Option<String>,
+    ) -> WasmResult<DescriptorSet> {
         Ok(DescriptorSet {
             params: params_from_js(params, preset.as_deref())?,
             descriptors: Vec::new(),
@@ -279,6 +299,7 @@ impl DescriptorSet {
         self.descriptors.len()
     }
     /// The parameters, as a plain object.
+    #[wasm_bindgen(unchecked_return_type = "Required<DescriptorParams>")]
     pub fn params(&self) -> WasmResult<JsValue> {
         to_js(&self.params)
     }
@@ -299,7 +320,13 @@ impl DescriptorSet {
     }
     /// k-means: `seeding` is `random`, `stride` or `plusplus`. Returns
     /// `{labels, seeds, iterations, converged, cost}`.
-    pub fn kmeans(&mut self, k: usize, seeding: &str, seed: u32) -> WasmResult<JsValue> {
+    #[wasm_bindgen(unchecked_return_type = "KMeansResult")]
+    pub fn kmeans(
+        &mut self,
+        k: usize,
+        #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
+        seed: u32,
+    ) -> WasmResult<JsValue> {
         self.check_nonempty()?;
         let s: Seeding = seeding.parse().map_err(js_err)?;
         let r = KMeans::fit(
@@ -310,6 +337,7 @@ impl DescriptorSet {
         to_js(&r)
     }
     /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
+    #[wasm_bindgen(unchecked_return_type = "{ labels: number[]; medoids: number[] }")]
     pub fn kmedoids(&mut self, k: usize, seed: u32) -> WasmResult<JsValue> {
         self.check_nonempty()?;
         let (space, m) = self.prepared(true)?;
@@ -342,7 +370,7 @@ impl DescriptorSet {
     /// inliers / all); without it they are `null`.
     #[wasm_bindgen(
         js_name = dbscanSweep,
-        unchecked_return_type = "Array<{epsilon: number, min_points: number, clusters: number, inlier_ratio: number, ari: number | null, score: number | null}>"
+        unchecked_return_type = "SweepPoint[]"
     )]
     pub fn dbscan_sweep(
         &mut self,
@@ -400,13 +428,21 @@ impl DescriptorSet {
     }
     /// Evaluate labels against ground-truth names (array of strings).
     /// Returns `{accuracy, ari, score, inliers, total, confusion}`.
+    #[wasm_bindgen(unchecked_return_type = "Evaluation")]
     pub fn evaluate(truth: Vec<String>, labels: &[i32]) -> WasmResult<JsValue> {
         to_js(&crate::eval::evaluate(&truth, labels).map_err(js_err)?)
     }
     /// A labelled model from cluster labels and names (`{label: name}` object
     /// or `[[label, name], ...]`).
     #[wasm_bindgen(js_name = buildModel)]
-    pub fn build_model(&self, labels: &[i32], names: JsValue) -> WasmResult<Model> {
+    pub fn build_model(
+        &self,
+        labels: &[i32],
+        #[wasm_bindgen(
+            unchecked_param_type = "Record<number, string> | [number, string][] | undefined | null"
+        )]
+        names: JsValue,
+    ) -> WasmResult<Model> {
         let names = names_from_js(names)?;
         Ok(Model {
             model: LabelledModel::build(&self.params, &self.descriptors, labels, &names)
@@ -459,13 +495,14 @@ pub struct ClusterTree {
 #[wasm_bindgen]
 impl ClusterTree {
     /// Categories at threshold t: `{threshold, labels, nodes}`.
+    #[wasm_bindgen(unchecked_return_type = "Cut")]
     pub fn cut(&self, threshold: f32) -> WasmResult<JsValue> {
         to_js(&self.tree.cut(threshold).map_err(js_err)?)
     }
     /// The cut giving k categories: the tree's k - 1 highest splits (of two
     /// splits at one height, the parent's first, which no threshold can
     /// separate). Fewer only when the tree has fewer than k leaves.
-    #[wasm_bindgen(js_name = cutK)]
+    #[wasm_bindgen(js_name = cutK, unchecked_return_type = "Cut")]
     pub fn cut_k(&self, k: usize) -> WasmResult<JsValue> {
         to_js(&self.tree.cut_k(k).map_err(js_err)?)
     }
@@ -480,6 +517,7 @@ impl ClusterTree {
         js_sys::Float64Array::from(&flat[..])
     }
     /// Nodes: `[{members, height, children, parent}]`, node 0 the root.
+    #[wasm_bindgen(unchecked_return_type = "TreeNode[]")]
     pub fn nodes(&self) -> WasmResult<JsValue> {
         to_js(&self.tree.nodes)
     }
@@ -511,6 +549,9 @@ impl Model {
         self.model.to_json().map_err(js_err)
     }
     /// `[{name, label, members, radius}]`.
+    #[wasm_bindgen(
+        unchecked_return_type = "{ name: string; label: number; members: number; radius: number }[]"
+    )]
     pub fn categories(&self) -> WasmResult<JsValue> {
         let c: Vec<serde_json::Value> = self
             .model
@@ -521,11 +562,18 @@ impl Model {
         to_js(&c)
     }
     /// Rename: `{label: name}` or `[[label, name], ...]`.
-    pub fn rename(&mut self, names: JsValue) -> WasmResult<()> {
+    pub fn rename(
+        &mut self,
+        #[wasm_bindgen(
+            unchecked_param_type = "Record<number, string> | [number, string][] | undefined | null"
+        )]
+        names: JsValue,
+    ) -> WasmResult<()> {
         self.model.rename(&names_from_js(names)?);
         Ok(())
     }
     /// The model's descriptor parameters (describe new scans with these).
+    #[wasm_bindgen(unchecked_return_type = "Required<DescriptorParams>")]
     pub fn params(&self) -> WasmResult<JsValue> {
         to_js(&self.model.params)
     }
@@ -533,11 +581,12 @@ impl Model {
     /// (`relative` = distance / the category's radius; > 1: farther than
     /// any scan it was made from; `Infinity` for a one-scan category and
     /// any other scan).
+    #[wasm_bindgen(unchecked_return_type = "Classification")]
     pub fn classify(&self, scan: &DescribedScan) -> WasmResult<JsValue> {
         to_js(&self.model.classify(&scan.descriptor).map_err(js_err)?)
     }
     /// Classify a descriptor given as JSON text.
-    #[wasm_bindgen(js_name = classifyJson)]
+    #[wasm_bindgen(js_name = classifyJson, unchecked_return_type = "Classification")]
     pub fn classify_json(&self, json: &str) -> WasmResult<JsValue> {
         let d: Descriptor = serde_json::from_str(json)
             .map_err(|e| JsError::new(&format!("descriptor JSON: {e}")))?;
@@ -546,7 +595,7 @@ impl Model {
 }
 
 /// Parse a poses file (KITTI, TUM or CSV): `{format, poses: [{name, time, position, yaw}]}`.
-#[wasm_bindgen(js_name = parsePoses)]
+#[wasm_bindgen(js_name = parsePoses, unchecked_return_type = "Poses")]
 pub fn parse_poses(
     text: &str,
     #[wasm_bindgen(js_name = fileName)] file_name: Option<String>,
@@ -569,6 +618,7 @@ impl Simulator {
     /// default: rooms of a kind share a plan) or `many`.
     #[wasm_bindgen(constructor)]
     pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\"")]
         scene: &str,
         seed: u32,
         scans: Option<usize>,
@@ -592,6 +642,9 @@ impl Simulator {
     }
     /// Scan i as binary PLY bytes plus `{name, label, pose}`:
     /// returns `{name, label, pose, bytes}`.
+    #[wasm_bindgen(
+        unchecked_return_type = "{ name: string; label: string; pose: Pose; bytes: Uint8Array }"
+    )]
     pub fn scan(&self, i: usize) -> WasmResult<JsValue> {
         if i >= self.sim.len() {
             return Err(JsError::new(&format!(

@@ -16,6 +16,7 @@ use serde::{Deserialize, Serialize};
 
 /// What the descriptor saw of a scan.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Summary {
     /// Finite points used.
     pub points: usize,

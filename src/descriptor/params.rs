@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 /// How candidate orientations are chosen (rotation invariance).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "lowercase")]
 pub enum Alignment {
     /// The paper's canonical frames from the dominant planar normals.
@@ -19,6 +20,7 @@ pub enum Alignment {
 
 /// How a matrix F is normalised before comparing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "snake_case")]
 pub enum Normalisation {
     /// Divide by |F|, the sum of all entries (paper Eq. 2).
@@ -29,6 +31,7 @@ pub enum Normalisation {
 
 /// The distance between two normalised matrices.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "snake_case")]
 pub enum Metric {
     /// Sum over columns of the L2 norm of the difference (paper Eq. 2).
@@ -41,6 +44,7 @@ pub enum Metric {
 
 /// Every parameter of the descriptor and its distance.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(default, deny_unknown_fields)]
 pub struct DescriptorParams {
     /// Name of the preset these values came from (informational).

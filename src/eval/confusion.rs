@@ -8,6 +8,7 @@ use std::collections::BTreeSet;
 
 /// How clusters were mapped to classes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "lowercase")]
 pub enum Mapping {
     Hungarian,
@@ -18,6 +19,7 @@ pub enum Mapping {
 /// the cluster mapping) plus "unassigned" (noise, and clusters the mapping
 /// left without a class).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Confusion {
     pub rows: Vec<String>,
     pub cols: Vec<String>,

@@ -16,6 +16,7 @@ use serde::{Deserialize, Serialize};
 
 /// Everything `placecat evaluate` prints.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Evaluation {
     pub accuracy: f64,
     /// ARI over the inliers (all scans when there is no noise).

@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 
 /// DBSCAN at one (epsilon, c).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct SweepPoint {
     pub epsilon: f32,
     pub min_points: usize,

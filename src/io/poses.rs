@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 /// Which poses format a file was in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "lowercase")]
 pub enum PoseFormat {
     Kitti,
@@ -16,6 +17,7 @@ pub enum PoseFormat {
 
 /// One pose: position and heading (yaw about z, radians) of the sensor.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Pose {
     /// Scan name for CSV rows; None for KITTI and TUM (matched by order).
     pub name: Option<String>,
@@ -27,6 +29,7 @@ pub struct Pose {
 
 /// A parsed poses file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Poses {
     pub format: PoseFormat,
     pub poses: Vec<Pose>,

@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 /// One node: its scans, its height (diameter: the largest Delta between two
 /// of its scans) and its children (none for a leaf).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct TreeNode {
     pub members: Vec<usize>,
     pub height: f32,
@@ -23,6 +24,7 @@ pub struct Tree {
 
 /// Flat categories from a cut.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Cut {
     pub threshold: f32,
     /// Category of each scan (0.., in order of the tree's left-to-right leaves).

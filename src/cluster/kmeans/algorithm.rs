@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 /// The outcome of k-means.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct KMeansResult {
     pub labels: Vec<i32>,
     /// Scans the centres started at.
