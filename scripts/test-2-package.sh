@@ -94,6 +94,10 @@ const poses = pc.parsePoses('a.pcd,1,2\nb.pcd,3,4\n', 'poses.csv');
 same('Poses', poses);
 same('Pose', poses.poses[0]);
 assert.equal(poses.poses[0].time, null, 'a CSV pose has time null');
+// The hand-written literal types name only values the API takes.
+const literals = (name) => dts.match(new RegExp(`export type ${name} = ([^;]*);`))[1].split('|').map((x) => JSON.parse(x.trim()));
+for (const p of literals('Preset')) assert.equal(pc.presetParams(p).preset, p);
+for (const s of literals('Seeding')) assert.equal(set.kmeans(2, s, 0).labels.length, 3, s);
 console.log('the .d.ts interfaces match the objects returned');
 JS
 node shapes.mjs "$real"
