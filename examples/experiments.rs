@@ -323,6 +323,78 @@ fn strip_svg(truth: &[String], e: &eval::Evaluation, labels: &[i32]) -> String {
     s + "</svg>"
 }
 
+/// S against epsilon, one line per c, and the inlier ratio dashed (paper
+/// Fig. 3).
+fn sweep_svg(sweep: &[eval::SweepPoint], eps: &[f32], cs: &[usize]) -> String {
+    let (w, h, left, top, plot_w, plot_h) = (560.0, 280.0, 50.0, 15.0, 380.0, 220.0);
+    let e_max = eps.iter().copied().fold(0f32, f32::max) as f64;
+    let x = |e: f32| left + plot_w * e as f64 / e_max;
+    let y = |v: f64| top + plot_h * (1.0 - v);
+    let mut s = format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="11">"#
+    );
+    s += &format!(
+        r##"<rect x="{left}" y="{top}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#888"/>"##
+    );
+    for t in [0.0, 0.25, 0.5, 0.75, 1.0] {
+        s += &format!(
+            r#"<text x="{}" y="{}" text-anchor="end">{t}</text>"#,
+            left - 4.0,
+            y(t) + 4.0
+        );
+    }
+    for e in [0.0, e_max / 2.0, e_max] {
+        s += &format!(
+            r#"<text x="{}" y="{}" text-anchor="middle">{e:.3}</text>"#,
+            x(e as f32),
+            top + plot_h + 14.0
+        );
+    }
+    s += &format!(
+        r#"<text x="{}" y="{}" text-anchor="middle">epsilon</text>"#,
+        left + plot_w / 2.0,
+        top + plot_h + 28.0
+    );
+    for (i, &c) in cs.iter().enumerate() {
+        let colour = PALETTE[i % 8];
+        let points: Vec<&eval::SweepPoint> = eps
+            .iter()
+            .filter_map(|&e| sweep.iter().find(|p| p.epsilon == e && p.min_points == c))
+            .collect();
+        let line = |v: &dyn Fn(&eval::SweepPoint) -> f64| {
+            points
+                .iter()
+                .map(|p| format!("{:.1},{:.1}", x(p.epsilon), y(v(p))))
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        s += &format!(
+            r#"<polyline fill="none" stroke="{colour}" stroke-width="2" points="{}"/>"#,
+            line(&|p| p.score.unwrap_or(0.0))
+        );
+        s += &format!(
+            r#"<polyline fill="none" stroke="{colour}" stroke-width="1" stroke-dasharray="4 3" points="{}"/>"#,
+            line(&|p| p.inlier_ratio)
+        );
+        let ly = top + 10.0 + 16.0 * i as f64;
+        s += &format!(
+            r#"<line x1="{}" y1="{ly}" x2="{}" y2="{ly}" stroke="{colour}" stroke-width="2"/><text x="{}" y="{}">c = {c}</text>"#,
+            left + plot_w + 15.0,
+            left + plot_w + 35.0,
+            left + plot_w + 40.0,
+            ly + 4.0
+        );
+    }
+    let ly = top + 20.0 + 16.0 * cs.len() as f64;
+    s += &format!(
+        r##"<text x="{}" y="{ly}">solid: S</text><text x="{}" y="{}">dashed: inliers</text>"##,
+        left + plot_w + 15.0,
+        left + plot_w + 15.0,
+        ly + 14.0
+    );
+    s + "</svg>"
+}
+
 /// The dendrogram (paper Fig. 1b, 2) from the linkage matrix.
 fn dendrogram_svg(tree: &Tree, truth: &[String], cut: f32) -> String {
     let z = tree.linkage();
@@ -567,6 +639,8 @@ fn main() {
             .collect();
         writeln!(out, "| {e:.3} | {} |", row.join(" | ")).unwrap();
     }
+    std::fs::write(docs.join("dbscan_sweep.svg"), sweep_svg(&sweep, &eps, &cs)).unwrap();
+    writeln!(out, "\n![DBSCAN sweep](dbscan_sweep.svg)\n\nS (solid) and the share of scans in a cluster (dashed) against epsilon, one colour per c, as in the paper's Fig. 3.").unwrap();
     let best = best_score(&sweep).unwrap();
     writeln!(
         out,
