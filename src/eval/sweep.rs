@@ -201,6 +201,28 @@ mod tests {
     }
 
     #[test]
+    fn a_large_set_takes_its_quantiles_from_an_even_sample_of_pairs() {
+        // 1,500 scans 1 apart: 1,124,250 pairs, over GRID_SAMPLE, so every
+        // second pair is sorted. Distance d occurs n - d times, so the share
+        // of pairs within e is known exactly for each epsilon.
+        let n = 1500usize;
+        let xs: Vec<f32> = (0..n).map(|i| i as f32).collect();
+        let pairs = n * (n - 1) / 2;
+        assert!(pairs > GRID_SAMPLE);
+        let grid = epsilon_grid(&line(&xs));
+        assert_eq!(grid.len(), GRID_QUANTILES.len(), "{grid:?}");
+        for (e, q) in grid.iter().zip(GRID_QUANTILES) {
+            let within: usize = (1..=*e as usize).map(|d| n - d).sum();
+            let share = within as f64 / pairs as f64;
+            // One distance holds at most (n - 1) / pairs = 0.13 % of pairs.
+            assert!(
+                (share - q).abs() < 0.003,
+                "epsilon {e}: {share} within, quantile {q}"
+            );
+        }
+    }
+
+    #[test]
     fn sweep_counts_clusters_inliers_and_scores() {
         // Two tight groups and one far scan.
         let m = line(&[0.0, 0.1, 0.2, 5.0, 5.1, 5.2, 20.0]);

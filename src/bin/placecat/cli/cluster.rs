@@ -8,7 +8,7 @@ use placecat::cluster::{
 };
 use placecat::io::write::{self, PlyEncoding};
 use placecat::sim::{SceneKind, SimParams, Simulation};
-use placecat::{Descriptor, DistanceOptions, Error, Result};
+use placecat::{DistanceOptions, Error, Result};
 use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -47,17 +47,14 @@ fn need<T>(v: Option<T>, flag: &str, method: &str) -> Result<T> {
 }
 
 pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<ExitCode> {
-    let set = DescriptorSet::load(descriptors)?;
-    let ds: Vec<Descriptor> = set.files.iter().map(|f| f.descriptor.clone()).collect();
+    let (params, files, ds) = DescriptorSet::load(descriptors)?.into_parts();
     if ds.is_empty() {
         return Err(Error::InvalidParameter(format!(
             "{}: no described files",
             descriptors.display()
         )));
     }
-    let opts = DistanceOptions::from(&set.params);
-    let space = Space::new(&ds, opts)?;
-    let files: Vec<&str> = set.files.iter().map(|f| f.name.as_str()).collect();
+    let space = Space::new(&ds, DistanceOptions::from(&params))?;
     let mut out = json!({ "files": files, "method": a.method });
     match a.method.as_str() {
         "kmeans" => {
@@ -77,7 +74,7 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
             let m = space.matrix();
             let (labels, medoids) = KMedoids::fit(&space, &m, k, a.seed, 100)?;
             out["labels"] = json!(labels);
-            out["medoids"] = json!(medoids.iter().map(|&i| files[i]).collect::<Vec<_>>());
+            out["medoids"] = json!(medoids.iter().map(|&i| &files[i]).collect::<Vec<_>>());
         }
         "hkmeans" => {
             let m = space.matrix();
@@ -207,14 +204,12 @@ pub struct SweepArgs {
 /// `epsilon,min_points,clusters,inlier_ratio,ari,score` (the last two empty
 /// without `--truth`); the best S goes to stderr.
 pub fn sweep(descriptors: &Path, a: &SweepArgs, output: Option<&Path>) -> Result<ExitCode> {
-    let set = DescriptorSet::load(descriptors)?;
-    let files: Vec<&str> = set.files.iter().map(|f| f.name.as_str()).collect();
+    let (params, files, ds) = DescriptorSet::load(descriptors)?.into_parts();
     let truth = a
         .truth
         .as_deref()
         .map(|t| truth_for(&files, t))
         .transpose()?;
-    let ds: Vec<Descriptor> = set.files.iter().map(|f| f.descriptor.clone()).collect();
     if ds.len() < 2 {
         return Err(Error::InvalidParameter(format!(
             "{}: a sweep needs at least two described files, it has {}",
@@ -222,7 +217,7 @@ pub fn sweep(descriptors: &Path, a: &SweepArgs, output: Option<&Path>) -> Result
             ds.len()
         )));
     }
-    let m = Space::new(&ds, DistanceOptions::from(&set.params))?.matrix();
+    let m = Space::new(&ds, DistanceOptions::from(&params))?.matrix();
     let eps = if a.eps.is_empty() {
         placecat::eval::epsilon_grid(&m)
     } else {

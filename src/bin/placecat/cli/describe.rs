@@ -39,6 +39,17 @@ impl DescriptorSet {
         let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&name))?;
         serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))
     }
+
+    /// The parameters, file names and descriptors, moved out (a large set's
+    /// descriptors are not copied to be clustered).
+    pub fn into_parts(self) -> (DescriptorParams, Vec<String>, Vec<Descriptor>) {
+        let (names, descriptors) = self
+            .files
+            .into_iter()
+            .map(|f| (f.name, f.descriptor))
+            .unzip();
+        (self.params, names, descriptors)
+    }
 }
 
 /// Expand folders into the scans inside them, sorted by name.
@@ -200,10 +211,9 @@ pub fn csv_cells(line: &str) -> Option<Vec<String>> {
 }
 
 pub fn distances(descriptors: &Path, output: Option<&Path>) -> Result<ExitCode> {
-    let set = DescriptorSet::load(descriptors)?;
-    let ds: Vec<Descriptor> = set.files.iter().map(|f| f.descriptor.clone()).collect();
-    let m = placecat::delta_matrix(&ds, (&set.params).into())?;
-    let names: Vec<String> = set.files.iter().map(|f| csv_cell(&f.name)).collect();
+    let (params, names, ds) = DescriptorSet::load(descriptors)?.into_parts();
+    let m = placecat::delta_matrix(&ds, (&params).into())?;
+    let names: Vec<String> = names.iter().map(|n| csv_cell(n)).collect();
     let mut out = String::from("file");
     for n in &names {
         out.push(',');

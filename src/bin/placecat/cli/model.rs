@@ -6,7 +6,7 @@ use super::cluster::read_truth;
 use super::describe::{csv_cell, describe_files, expand, DescriptorSet};
 use placecat::io::ReadLimits;
 use placecat::model::LabelledModel;
-use placecat::{Descriptor, Error, Result};
+use placecat::{Error, Result};
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -15,13 +15,12 @@ use std::process::ExitCode;
 /// One category per distinct name in `names` (`file,name` rows: the page's
 /// "Export CSV", or a labels.csv); scans it does not name are left out.
 pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode> {
-    let set = DescriptorSet::load(descriptors)?;
+    let (params, files, ds) = DescriptorSet::load(descriptors)?.into_parts();
     let table: HashMap<String, String> = read_truth(names)?.into_iter().collect();
     let mut kinds: Vec<String> = Vec::new();
-    let labels: Vec<i32> = set
-        .files
+    let labels: Vec<i32> = files
         .iter()
-        .map(|f| match table.get(&f.name) {
+        .map(|f| match table.get(f) {
             Some(name) => match kinds.iter().position(|k| k == name) {
                 Some(i) => i as i32,
                 None => {
@@ -35,15 +34,13 @@ pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode
     if kinds.is_empty() {
         return Err(Error::Mismatch(format!(
             "names none of the {} scans of {}",
-            set.files.len(),
+            files.len(),
             descriptors.display()
         ))
         .in_file(names.display().to_string()));
     }
-    // The labels are made; the descriptors can move out of the set.
-    let descriptors_only: Vec<Descriptor> = set.files.into_iter().map(|f| f.descriptor).collect();
     let named: Vec<(i32, String)> = (0..).zip(kinds.iter().cloned()).collect();
-    let model = LabelledModel::build(&set.params, &descriptors_only, &labels, &named)?;
+    let model = LabelledModel::build(&params, &ds, &labels, &named)?;
     super::write_out(Some(output), &model.to_json()?)?;
     let unnamed = labels.iter().filter(|&&l| l < 0).count();
     eprintln!(
