@@ -15,13 +15,14 @@ const pkg = {
   type: 'module',
   main: './node/placecat.js',
   module: './bundler/placecat.js',
-  types: './web/placecat.d.ts',
+  types: './bundler/placecat.d.ts',
+  // Each condition brings its own declarations: Node and bundlers get the
+  // API without the web target's init(), which they do not export.
   exports: {
     '.': {
-      types: './web/placecat.d.ts',
-      node: './node/placecat.js',
-      browser: './bundler/placecat.js',
-      default: './bundler/placecat.js',
+      node: { types: './node/placecat.d.ts', default: './node/placecat.js' },
+      browser: { types: './bundler/placecat.d.ts', default: './bundler/placecat.js' },
+      default: { types: './bundler/placecat.d.ts', default: './bundler/placecat.js' },
     },
     './web': { types: './web/placecat.d.ts', default: './web/placecat.js' },
     './bundler': { types: './bundler/placecat.d.ts', default: './bundler/placecat.js' },

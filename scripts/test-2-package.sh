@@ -61,7 +61,12 @@ import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
 import * as pc from 'placecat';
 
-const dts = readFileSync(createRequire(import.meta.url).resolve('placecat/package.json').replace(/package\.json$/, 'web/placecat.d.ts'), 'utf8');
+const dir = createRequire(import.meta.url).resolve('placecat/package.json').replace(/package\.json$/, '');
+const dts = readFileSync(`${dir}node/placecat.d.ts`, 'utf8');
+// One API for all three targets: the web's declarations are the others'
+// plus init().
+assert.equal(readFileSync(`${dir}bundler/placecat.d.ts`, 'utf8'), dts, 'bundler and node declare the same API');
+assert.ok(readFileSync(`${dir}web/placecat.d.ts`, 'utf8').startsWith(dts), 'web declares the same API, then init()');
 const declared = (name) => {
   const body = dts.match(new RegExp(`export interface ${name} \\{([^}]*)\\}`))?.[1];
   assert.ok(body, `interface ${name} in the .d.ts`);
@@ -90,6 +95,11 @@ same('SweepPoint', sweep[0]);
 assert.equal(sweep[0].ari, null, 'no truth: ari is null');
 const model = set.buildModel(Int32Array.from(tree.cutK(2).labels), [[0, 'a'], [1, 'b']]);
 same('Classification', model.classify(scans[0]));
+same('CategorySummary', model.categories()[0]);
+same('KMedoidsResult', set.kmedoids(2, 0));
+const simulated = new pc.Simulator('indoor', 1, 1).scan(0);
+same('SimulatedScan', simulated);
+assert.ok(simulated.bytes instanceof Uint8Array, 'a simulated scan comes as PLY bytes');
 const poses = pc.parsePoses('a.pcd,1,2\nb.pcd,3,4\n', 'poses.csv');
 same('Poses', poses);
 same('Pose', poses.poses[0]);
@@ -103,8 +113,8 @@ JS
 node shapes.mjs "$real"
 
 # And a TypeScript user's code compiles against them in strict mode
-# (wasm-bindgen's classes declare [Symbol.dispose]: lib esnext.disposable; its
-# init() takes WebAssembly types: lib dom).
+# (wasm-bindgen's classes declare [Symbol.dispose]: lib esnext.disposable).
+# Node resolution gets the node declarations, which need nothing more.
 cat > typed.ts <<'TS'
 import { DescriptorSet, Simulator, presetParams, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
 const params: Required<DescriptorParams> = presetParams('indoor');
@@ -115,23 +125,40 @@ const best: SweepPoint | undefined = set.dbscanSweep(set.epsilonGrid(), [2]).fin
 const firstName: string | null = ev.confusion.cluster_class[0][1];
 const radius: number = set.buildModel(Int32Array.from(cut.labels), { 0: 'room' }).categories()[0].radius;
 const km = set.kmeans(2, 'stride', 0).labels.length + new Simulator('indoor', 1).length;
-console.log(cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km);
+const medoid: number = set.kmedoids(2, 0).medoids[0];
+const bytes: Uint8Array = new Simulator('indoor', 1, 1).scan(0).bytes;
+export const used = [cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km, medoid, bytes.length];
 TS
 echo "--- no public method returns or takes 'any' (the raw wasm exports aside)"
 if grep -vE '^\s*readonly [A-Za-z_]+: \(' node_modules/placecat/web/placecat.d.ts | grep -nE ': any\b'; then
   echo "the .d.ts above leaves a public type as any"; exit 1
 fi
 echo "--- tsc --strict on a TypeScript consumer"
-tsc() { "$root/node_modules/.bin/tsc" --noEmit --strict --target es2022 --lib es2022,esnext.disposable,dom --module nodenext --moduleResolution nodenext "$@"; }
+tsc_with() { local lib=$1; shift; "$root/node_modules/.bin/tsc" --noEmit --strict --target es2022 --lib "$lib" --module nodenext --moduleResolution nodenext "$@"; }
+tsc() { tsc_with es2022,esnext.disposable "$@"; }
 tsc typed.ts
+# Node has no init(): importing it from 'placecat' is an error, not a crash
+# at run time. The browser build has it (and takes WebAssembly types: dom).
+cat > node-init.ts <<'TS'
+import init from 'placecat';
+init();
+TS
+if out=$(tsc node-init.ts); then echo "node-init.ts compiled: Node was given the web declarations"; exit 1; fi
+echo "$out" | grep -q "node-init.ts(2,1): error TS2349" || { echo "$out"; exit 1; }
+cat > web-init.ts <<'TS'
+import init, { DescriptorSet } from 'placecat/web';
+await init();
+export const n: number = new DescriptorSet(undefined, 'indoor').length;
+TS
+tsc_with es2022,esnext.disposable,dom --module es2022 --moduleResolution bundler web-init.ts
 # ... and a typo in a seeding or a result field does not.
 cat > typo.ts <<'TS'
 import { DescriptorSet } from 'placecat';
 const set = new DescriptorSet(undefined, 'indoor');
 set.kmeans(2, 'strided', 0);
-console.log(set.hkmeans(0).cutK(2).threshhold);
+export const t = set.hkmeans(0).cutK(2).threshhold;
 TS
 if out=$(tsc typo.ts); then echo "typo.ts compiled"; exit 1; fi
 echo "$out" | grep -q "typo.ts(3,15): error TS2345" || { echo "$out"; exit 1; }
-echo "$out" | grep -q "typo.ts(4,36): error TS2551" || { echo "$out"; exit 1; }
+echo "$out" | grep -q "typo.ts(4,41): error TS2551" || { echo "$out"; exit 1; }
 echo "typo.ts is rejected: $(echo "$out" | grep -c error) errors"

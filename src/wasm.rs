@@ -39,7 +39,35 @@ const TS_NAMES: &'static str = r#"
 export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru";
 /** k-means seeding: random scans, stride ("deterministic": scan i*n/k), or k-means++. */
 export type Seeding = "random" | "stride" | "deterministic" | "plusplus";
+/** One simulated scan: its file name, true kind, pose and binary PLY bytes. */
+export interface SimulatedScan {
+    name: string;
+    label: string;
+    pose: Pose;
+    bytes: Uint8Array;
+}
 "#;
+
+/// What `kmedoids` returns.
+#[derive(Serialize, tsify::Tsify)]
+pub struct KMedoidsResult {
+    /// Category of each scan.
+    labels: Vec<i32>,
+    /// The scan at the centre of each category.
+    medoids: Vec<usize>,
+}
+
+/// A category of a model, without its centre.
+#[derive(Serialize, tsify::Tsify)]
+pub struct CategorySummary {
+    name: String,
+    /// The cluster label it came from.
+    label: i32,
+    /// Scans it was made from.
+    members: usize,
+    /// Largest Delta from its centre to a member.
+    radius: f32,
+}
 
 #[wasm_bindgen(start)]
 fn start() {
@@ -337,13 +365,13 @@ impl DescriptorSet {
         to_js(&r)
     }
     /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
-    #[wasm_bindgen(unchecked_return_type = "{ labels: number[]; medoids: number[] }")]
+    #[wasm_bindgen(unchecked_return_type = "KMedoidsResult")]
     pub fn kmedoids(&mut self, k: usize, seed: u32) -> WasmResult<JsValue> {
         self.check_nonempty()?;
         let (space, m) = self.prepared(true)?;
         let m = m.expect("asked for the matrix");
         let (labels, medoids) = KMedoids::fit(space, m, k, seed.into(), 100).map_err(js_err)?;
-        to_js(&serde_json::json!({ "labels": labels, "medoids": medoids }))
+        to_js(&KMedoidsResult { labels, medoids })
     }
     /// DBSCAN (Delta <= eps are neighbours; minPoints counts the scan itself).
     /// Labels as Int32Array, -1 for noise.
@@ -549,15 +577,18 @@ impl Model {
         self.model.to_json().map_err(js_err)
     }
     /// `[{name, label, members, radius}]`.
-    #[wasm_bindgen(
-        unchecked_return_type = "{ name: string; label: number; members: number; radius: number }[]"
-    )]
+    #[wasm_bindgen(unchecked_return_type = "CategorySummary[]")]
     pub fn categories(&self) -> WasmResult<JsValue> {
-        let c: Vec<serde_json::Value> = self
+        let c: Vec<CategorySummary> = self
             .model
             .categories
             .iter()
-            .map(|c| serde_json::json!({"name": c.name, "label": c.label, "members": c.members, "radius": c.radius}))
+            .map(|c| CategorySummary {
+                name: c.name.clone(),
+                label: c.label,
+                members: c.members,
+                radius: c.radius,
+            })
             .collect();
         to_js(&c)
     }
@@ -642,9 +673,7 @@ impl Simulator {
     }
     /// Scan i as binary PLY bytes plus `{name, label, pose}`:
     /// returns `{name, label, pose, bytes}`.
-    #[wasm_bindgen(
-        unchecked_return_type = "{ name: string; label: string; pose: Pose; bytes: Uint8Array }"
-    )]
+    #[wasm_bindgen(unchecked_return_type = "SimulatedScan")]
     pub fn scan(&self, i: usize) -> WasmResult<JsValue> {
         if i >= self.sim.len() {
             return Err(JsError::new(&format!(
