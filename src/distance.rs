@@ -101,6 +101,15 @@ impl Prepared {
             stride,
         })
     }
+
+    /// Bytes this item holds on the heap (both layouts of its matrices);
+    /// `examples/scaling.rs` reports it beside the Delta matrix's size.
+    pub fn heap_bytes(&self) -> usize {
+        let floats: usize =
+            self.matrices.iter().map(Vec::capacity).sum::<usize>() + self.padded.capacity();
+        floats * std::mem::size_of::<f32>()
+            + self.matrices.capacity() * std::mem::size_of::<Vec<f32>>()
+    }
 }
 
 /// Normalise one count matrix.
@@ -378,6 +387,20 @@ mod tests {
                 .collect(),
             summary: Default::default(),
         }
+    }
+
+    /// 11 x 7 matrices: 77 floats each as is, 12 x 7 = 84 padded.
+    #[test]
+    fn heap_bytes_counts_both_layouts_of_every_candidate() {
+        let mut r = rand_chacha::ChaCha8Rng::seed_from_u64(2);
+        let d = random_descriptor(&mut r, 11, 7);
+        let p = Prepared::new(&d, DistanceOptions::default()).unwrap();
+        let n = d.matrices.len();
+        assert_eq!(p.stride, 12);
+        assert_eq!(
+            p.heap_bytes(),
+            n * (77 + 84) * 4 + n * std::mem::size_of::<Vec<f32>>()
+        );
     }
 
     #[test]
