@@ -119,7 +119,7 @@ fn main() {
         )
         .unwrap();
     }
-    writeln!(out, "\nThe Delta matrix and DBSCAN grow as n^2 (every pair); hierarchical k-means++ with the matrix is dominated by the node diameters (n^2 at the root); without it, by the exact diameters of nodes of up to 1,500 scans and by 2-means. k-means grows as n k iterations. Prepared descriptors (every candidate matrix normalised, once as is and once padded for the Delta loop) grow as n.").unwrap();
+    writeln!(out, "\nThe Delta matrix and DBSCAN grow as n^2 (every pair); hierarchical k-means++ with the matrix is dominated by the node diameters (n^2 at the root); without it, by the exact diameters of nodes of up to 1,500 scans and by 2-means. k-means grows as n k iterations. Prepared descriptors (every candidate matrix normalised and padded to whole SIMD lanes, held once) grow as n.").unwrap();
     std::fs::write(
         concat!(env!("CARGO_MANIFEST_DIR"), "/docs/scaling.md"),
         &out,

@@ -44,16 +44,35 @@ pub struct Prepared {
     pub cols: usize,
     /// |F|.
     pub total: f32,
-    /// Normalised matrices, column-major (each range interval's class
+    /// The normalised matrices of every candidate orientation, one after
+    /// another in one buffer, column-major (each range interval's class
     /// counts contiguous, so the per-column norm of Eq. 2 reads memory in
-    /// order; measured in benches/stages.rs, delta_matrix).
-    pub matrices: Vec<Vec<f32>>,
-    /// The same matrices one after another in one buffer, each column
+    /// order; measured in benches/stages.rs, delta_matrix), each column
     /// padded with zeros to `stride` (a multiple of 4) rows: the Delta
     /// matrix's inner loop then runs on whole SIMD lanes and one allocation
-    /// (measured: see [`delta_prepared`]).
+    /// (measured: see [`delta_prepared`]). Every metric gives the same
+    /// value with or without the zero rows, so this is the only copy.
     pub padded: Vec<f32>,
     pub stride: usize,
+}
+
+/// A column-major rows x cols matrix with each column padded with zeros to
+/// `stride` rows.
+pub fn pad(m: &[f32], rows: usize, stride: usize) -> Vec<f32> {
+    let cols = m.len() / rows.max(1);
+    let mut out = vec![0f32; stride * cols];
+    for (col, to) in m.chunks_exact(rows).zip(out.chunks_exact_mut(stride)) {
+        to[..rows].copy_from_slice(col);
+    }
+    out
+}
+
+/// The inverse of [`pad`]: the first `rows` of every `stride`.
+pub fn unpad(m: &[f32], rows: usize, stride: usize) -> Vec<f32> {
+    m.chunks_exact(stride)
+        .flat_map(|col| &col[..rows])
+        .copied()
+        .collect()
 }
 
 /// Row-major rows x cols to column-major.
@@ -71,44 +90,44 @@ impl Prepared {
     pub fn new(d: &Descriptor, opts: DistanceOptions) -> Result<Prepared> {
         d.validate()?;
         let total = d.total() as f32;
-        let matrices: Vec<Vec<f32>> = d
-            .matrices
-            .iter()
-            .map(|m| {
-                transpose(
-                    &normalise(m, d.rows, d.cols, opts.normalisation),
-                    d.rows,
-                    d.cols,
-                )
-            })
-            .collect();
         let stride = d.rows.next_multiple_of(4);
-        let mut padded = vec![0f32; stride * d.cols * matrices.len()];
-        for (m, out) in matrices
-            .iter()
-            .zip(padded.chunks_exact_mut(stride * d.cols))
-        {
-            for (col, to) in m.chunks_exact(d.rows).zip(out.chunks_exact_mut(stride)) {
-                to[..d.rows].copy_from_slice(col);
-            }
+        let mut padded = Vec::with_capacity(stride * d.cols * d.matrices.len());
+        for m in &d.matrices {
+            let column_major = transpose(
+                &normalise(m, d.rows, d.cols, opts.normalisation),
+                d.rows,
+                d.cols,
+            );
+            padded.extend(pad(&column_major, d.rows, stride));
         }
         Ok(Prepared {
             rows: d.rows,
             cols: d.cols,
             total,
-            matrices,
             padded,
             stride,
         })
     }
 
-    /// Bytes this item holds on the heap (both layouts of its matrices);
-    /// `examples/scaling.rs` reports it beside the Delta matrix's size.
+    /// The candidate orientations' padded matrices (`stride` x `cols`).
+    pub fn candidates(&self) -> std::slice::ChunksExact<'_, f32> {
+        self.padded.chunks_exact(self.stride * self.cols)
+    }
+
+    /// Candidate k without the padding: column-major `rows` x `cols`.
+    pub fn unpadded(&self, k: usize) -> Vec<f32> {
+        let size = self.stride * self.cols;
+        unpad(
+            &self.padded[k * size..(k + 1) * size],
+            self.rows,
+            self.stride,
+        )
+    }
+
+    /// Bytes this item holds on the heap; `examples/scaling.rs` reports it
+    /// beside the Delta matrix's size.
     pub fn heap_bytes(&self) -> usize {
-        let floats: usize =
-            self.matrices.iter().map(Vec::capacity).sum::<usize>() + self.padded.capacity();
-        floats * std::mem::size_of::<f32>()
-            + self.matrices.capacity() * std::mem::size_of::<Vec<f32>>()
+        self.padded.capacity() * std::mem::size_of::<f32>()
     }
 }
 
@@ -234,9 +253,11 @@ pub fn delta_prepared(a: &Prepared, b: &Prepared, metric: Metric) -> f32 {
         }
     } else {
         let mut best = f32::INFINITY;
-        for fa in &a.matrices {
-            for fb in &b.matrices {
-                best = best.min(matrix_distance_below(fa, fb, a.rows, a.cols, metric, best));
+        for fa in a.candidates() {
+            for fb in b.candidates() {
+                best = best.min(matrix_distance_below(
+                    fa, fb, a.stride, a.cols, metric, best,
+                ));
             }
         }
         best
@@ -389,18 +410,56 @@ mod tests {
         }
     }
 
-    /// 11 x 7 matrices: 77 floats each as is, 12 x 7 = 84 padded.
+    /// 11 x 7 matrices are held once, padded to 12 x 7 = 84 floats.
     #[test]
-    fn heap_bytes_counts_both_layouts_of_every_candidate() {
+    fn a_prepared_descriptor_holds_each_candidate_once_padded() {
         let mut r = rand_chacha::ChaCha8Rng::seed_from_u64(2);
         let d = random_descriptor(&mut r, 11, 7);
         let p = Prepared::new(&d, DistanceOptions::default()).unwrap();
         let n = d.matrices.len();
         assert_eq!(p.stride, 12);
-        assert_eq!(
-            p.heap_bytes(),
-            n * (77 + 84) * 4 + n * std::mem::size_of::<Vec<f32>>()
-        );
+        assert_eq!(p.heap_bytes(), n * 84 * 4);
+        assert_eq!(p.candidates().len(), n);
+        for (k, m) in d.matrices.iter().enumerate() {
+            // Row-major counts in, normalised column-major out: entry
+            // (row 3, column 5) is at 5 * 11 + 3 unpadded, 5 * 12 + 3 padded.
+            let total: u32 = m.iter().sum();
+            let want = m[3 * 7 + 5] as f32 / total as f32;
+            assert_eq!(p.unpadded(k)[5 * 11 + 3], want);
+            assert_eq!(p.candidates().nth(k).unwrap()[5 * 12 + 3], want);
+            assert_eq!(pad(&p.unpadded(k), 11, 12), p.candidates().nth(k).unwrap());
+        }
+    }
+
+    /// Zero rows change no metric: Hellinger and chi-squared give the same
+    /// value on padded and unpadded matrices.
+    #[test]
+    fn every_metric_ignores_the_padding() {
+        let mut r = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+        for metric in [Metric::Paper, Metric::Hellinger, Metric::ChiSquared] {
+            let opts = DistanceOptions {
+                metric,
+                ..DistanceOptions::default()
+            };
+            let (a, b) = (
+                random_descriptor(&mut r, 11, 7),
+                random_descriptor(&mut r, 11, 7),
+            );
+            let (pa, pb) = (
+                Prepared::new(&a, opts).unwrap(),
+                Prepared::new(&b, opts).unwrap(),
+            );
+            let plain = matrix_distance(&pa.unpadded(0), &pb.unpadded(0), 11, 7, metric);
+            let padded = matrix_distance(
+                pa.candidates().next().unwrap(),
+                pb.candidates().next().unwrap(),
+                12,
+                7,
+                metric,
+            );
+            assert_eq!(plain, padded, "{metric:?}");
+            assert!(plain > 0.0);
+        }
     }
 
     #[test]
@@ -435,9 +494,10 @@ mod tests {
                     Prepared::new(&b, opts).unwrap(),
                 );
                 let mut plain = f32::INFINITY;
-                for fa in &pa.matrices {
-                    for fb in &pb.matrices {
-                        plain = plain.min(matrix_distance(fa, fb, rows, cols, Metric::Paper));
+                for ka in 0..a.matrices.len() {
+                    for kb in 0..b.matrices.len() {
+                        let (fa, fb) = (pa.unpadded(ka), pb.unpadded(kb));
+                        plain = plain.min(matrix_distance(&fa, &fb, rows, cols, Metric::Paper));
                     }
                 }
                 let plain = plain * size_factor(pa.total, pb.total);

@@ -2,9 +2,9 @@
 //! classify a new scan (each category's centre in descriptor space), with
 //! the descriptor parameters it was made with. Saved and loaded as JSON.
 
-use crate::cluster::{Centre, Space};
+use crate::cluster::Space;
 use crate::descriptor::{Descriptor, DescriptorParams};
-use crate::distance::{matrix_distance, size_factor, DistanceOptions, Prepared};
+use crate::distance::{matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared};
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 
@@ -88,6 +88,7 @@ impl LabelledModel {
                 "no labelled scans to build a model from".into(),
             ));
         }
+        let first = &space.items[0];
         let mut categories = Vec::new();
         for id in ids {
             let members: Vec<usize> = (0..labels.len()).filter(|&i| labels[i] == id).collect();
@@ -110,12 +111,11 @@ impl LabelledModel {
                 name,
                 label: id,
                 members: members.len(),
-                centre: centre.matrix,
+                centre: unpad(&centre.matrix, first.rows, first.stride),
                 total: centre.total,
                 radius,
             });
         }
-        let first = &space.items[0];
         Ok(LabelledModel {
             format: MODEL_FORMAT.into(),
             params: params.clone(),
@@ -182,16 +182,10 @@ impl LabelledModel {
         let p = Prepared::new(d, DistanceOptions::from(&self.params))?;
         let mut best: Option<Classification> = None;
         for c in &self.categories {
-            let centre = Centre {
-                matrix: c.centre.clone(),
-                total: c.total,
-            };
+            let centre = pad(&c.centre, self.rows, p.stride);
             let dist = p
-                .matrices
-                .iter()
-                .map(|m| {
-                    matrix_distance(&centre.matrix, m, self.rows, self.cols, self.params.metric)
-                })
+                .candidates()
+                .map(|m| matrix_distance(&centre, m, p.stride, self.cols, self.params.metric))
                 .fold(f32::INFINITY, f32::min)
                 * size_factor(c.total, p.total);
             if best.as_ref().is_none_or(|b| dist < b.distance) {

@@ -15,6 +15,7 @@ pub struct Space {
 /// A cluster centre: one normalised matrix and the members' mean |F|.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Centre {
+    /// Column-major and padded as [`Prepared::padded`] (`stride` rows).
     pub matrix: Vec<f32>,
     pub total: f32,
 }
@@ -35,10 +36,11 @@ impl Space {
         self.items.is_empty()
     }
 
+    /// Padded rows (`stride`) and columns of every item's matrices.
     fn shape(&self) -> (usize, usize) {
         self.items
             .first()
-            .map(|p| (p.rows, p.cols))
+            .map(|p| (p.stride, p.cols))
             .unwrap_or((0, 0))
     }
 
@@ -55,11 +57,11 @@ impl Space {
 
     /// Delta from a centre to item i, and the candidate of i that attains it.
     pub fn to_centre(&self, c: &Centre, i: usize) -> (f32, usize) {
-        let (rows, cols) = self.shape();
+        let (stride, cols) = self.shape();
         let item = &self.items[i];
         let mut best = (f32::INFINITY, 0);
-        for (k, m) in item.matrices.iter().enumerate() {
-            let d = matrix_distance(&c.matrix, m, rows, cols, self.metric);
+        for (k, m) in item.candidates().enumerate() {
+            let d = matrix_distance(&c.matrix, m, stride, cols, self.metric);
             if d < best.0 {
                 best = (d, k);
             }
@@ -70,7 +72,11 @@ impl Space {
     /// A centre at item i (its first candidate).
     pub fn centre_of(&self, i: usize) -> Centre {
         Centre {
-            matrix: self.items[i].matrices[0].clone(),
+            matrix: self.items[i]
+                .candidates()
+                .next()
+                .unwrap_or_default()
+                .to_vec(),
             total: self.items[i].total,
         }
     }
@@ -85,7 +91,8 @@ impl Space {
         let mut total = 0f64;
         for &i in members {
             let (_, k) = self.to_centre(near, i);
-            for (a, b) in matrix.iter_mut().zip(&self.items[i].matrices[k]) {
+            let candidate = self.items[i].candidates().nth(k).unwrap_or_default();
+            for (a, b) in matrix.iter_mut().zip(candidate) {
                 *a += b;
             }
             total += self.items[i].total as f64;
