@@ -75,15 +75,22 @@ pub fn unpad(m: &[f32], rows: usize, stride: usize) -> Vec<f32> {
         .collect()
 }
 
-/// Row-major rows x cols to column-major.
-fn transpose(m: &[f32], rows: usize, cols: usize) -> Vec<f32> {
-    let mut out = vec![0f32; m.len()];
+/// Row-major rows x cols to column-major with each column padded with
+/// zeros to `stride` rows, appended to `out`.
+fn extend_column_major_padded(
+    out: &mut Vec<f32>,
+    m: &[f32],
+    rows: usize,
+    cols: usize,
+    stride: usize,
+) {
+    let start = out.len();
+    out.resize(start + stride * cols, 0.0);
     for r in 0..rows {
         for c in 0..cols {
-            out[c * rows + r] = m[r * cols + c];
+            out[start + c * stride + r] = m[r * cols + c];
         }
     }
-    out
 }
 
 impl Prepared {
@@ -93,12 +100,8 @@ impl Prepared {
         let stride = d.rows.next_multiple_of(4);
         let mut padded = Vec::with_capacity(stride * d.cols * d.matrices.len());
         for m in &d.matrices {
-            let column_major = transpose(
-                &normalise(m, d.rows, d.cols, opts.normalisation),
-                d.rows,
-                d.cols,
-            );
-            padded.extend(pad(&column_major, d.rows, stride));
+            let normalised = normalise(m, d.rows, d.cols, opts.normalisation);
+            extend_column_major_padded(&mut padded, &normalised, d.rows, d.cols, stride);
         }
         Ok(Prepared {
             rows: d.rows,
@@ -114,14 +117,10 @@ impl Prepared {
         self.padded.chunks_exact(self.stride * self.cols)
     }
 
-    /// Candidate k without the padding: column-major `rows` x `cols`.
-    pub fn unpadded(&self, k: usize) -> Vec<f32> {
+    /// Candidate k's padded matrix (`stride` x `cols`).
+    pub fn candidate(&self, k: usize) -> &[f32] {
         let size = self.stride * self.cols;
-        unpad(
-            &self.padded[k * size..(k + 1) * size],
-            self.rows,
-            self.stride,
-        )
+        &self.padded[k * size..(k + 1) * size]
     }
 
     /// Bytes this item holds on the heap; `examples/scaling.rs` reports it
@@ -425,9 +424,11 @@ mod tests {
             // (row 3, column 5) is at 5 * 11 + 3 unpadded, 5 * 12 + 3 padded.
             let total: u32 = m.iter().sum();
             let want = m[3 * 7 + 5] as f32 / total as f32;
-            assert_eq!(p.unpadded(k)[5 * 11 + 3], want);
-            assert_eq!(p.candidates().nth(k).unwrap()[5 * 12 + 3], want);
-            assert_eq!(pad(&p.unpadded(k), 11, 12), p.candidates().nth(k).unwrap());
+            let unpadded = unpad(p.candidate(k), 11, 12);
+            assert_eq!(unpadded[5 * 11 + 3], want);
+            assert_eq!(p.candidate(k)[5 * 12 + 3], want);
+            assert_eq!(p.candidates().nth(k).unwrap(), p.candidate(k));
+            assert_eq!(pad(&unpadded, 11, 12), p.candidate(k));
         }
     }
 
@@ -449,14 +450,9 @@ mod tests {
                 Prepared::new(&a, opts).unwrap(),
                 Prepared::new(&b, opts).unwrap(),
             );
-            let plain = matrix_distance(&pa.unpadded(0), &pb.unpadded(0), 11, 7, metric);
-            let padded = matrix_distance(
-                pa.candidates().next().unwrap(),
-                pb.candidates().next().unwrap(),
-                12,
-                7,
-                metric,
-            );
+            let (fa, fb) = (pa.candidate(0), pb.candidate(0));
+            let plain = matrix_distance(&unpad(fa, 11, 12), &unpad(fb, 11, 12), 11, 7, metric);
+            let padded = matrix_distance(fa, fb, 12, 7, metric);
             assert_eq!(plain, padded, "{metric:?}");
             assert!(plain > 0.0);
         }
@@ -496,7 +492,8 @@ mod tests {
                 let mut plain = f32::INFINITY;
                 for ka in 0..a.matrices.len() {
                     for kb in 0..b.matrices.len() {
-                        let (fa, fb) = (pa.unpadded(ka), pb.unpadded(kb));
+                        let fa = unpad(pa.candidate(ka), rows, pa.stride);
+                        let fb = unpad(pb.candidate(kb), rows, pb.stride);
                         plain = plain.min(matrix_distance(&fa, &fb, rows, cols, Metric::Paper));
                     }
                 }

@@ -72,11 +72,7 @@ impl Space {
     /// A centre at item i (its first candidate).
     pub fn centre_of(&self, i: usize) -> Centre {
         Centre {
-            matrix: self.items[i]
-                .candidates()
-                .next()
-                .unwrap_or_default()
-                .to_vec(),
+            matrix: self.items[i].candidate(0).to_vec(),
             total: self.items[i].total,
         }
     }
@@ -91,8 +87,7 @@ impl Space {
         let mut total = 0f64;
         for &i in members {
             let (_, k) = self.to_centre(near, i);
-            let candidate = self.items[i].candidates().nth(k).unwrap_or_default();
-            for (a, b) in matrix.iter_mut().zip(candidate) {
+            for (a, b) in matrix.iter_mut().zip(self.items[i].candidate(k)) {
                 *a += b;
             }
             total += self.items[i].total as f64;
