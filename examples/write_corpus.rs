@@ -1,7 +1,10 @@
 //! Writes small seed files for the fuzzers (fuzz/seed-corpus.sh): one
-//! simulated scan, decimated, in every format placecat reads.
+//! simulated scan, decimated, in every format placecat reads; and the JSON
+//! of its descriptor and of a model made from two scans.
 use placecat::io::write::{self, PcdData, PlyEncoding};
+use placecat::model::LabelledModel;
 use placecat::sim::{SceneKind, SimParams, Simulation};
+use placecat::{describe, DescriptorParams};
 
 fn main() {
     let dir = std::path::PathBuf::from(std::env::args().nth(1).expect("corpus dir"));
@@ -34,4 +37,18 @@ fn main() {
     let mut d = vec![0u8];
     d.extend(write::kitti(&pts));
     put("describe", "sim.bin", d);
+
+    let params = DescriptorParams::indoor();
+    let descriptors: Vec<_> = [0, 45]
+        .iter()
+        .map(|&i| describe(&sim.scan(i).points, &params).unwrap())
+        .collect();
+    put(
+        "json",
+        "descriptor.json",
+        serde_json::to_vec(&descriptors[0]).unwrap(),
+    );
+    let names = [(0, "office".to_string()), (1, "kitchen".to_string())];
+    let model = LabelledModel::build(&params, &descriptors, &[0, 1], &names).unwrap();
+    put("json", "model.json", model.to_json().unwrap().into_bytes());
 }

@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 REAL=../../shared/data/real
-rm -rf corpus && mkdir -p corpus/{ply,pcd,kitti,poses,describe}
+rm -rf corpus && mkdir -p corpus/{ply,pcd,kitti,poses,describe,json}
 cargo run --quiet --release --manifest-path ../Cargo.toml --example write_corpus -- corpus
 cp $REAL/kitti00/poses.txt corpus/poses/kitti.txt
 printf 'name,x,y,z\na.ply,1,2,3\n' > corpus/poses/csv.txt

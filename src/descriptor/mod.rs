@@ -62,11 +62,10 @@ impl Descriptor {
         if self.matrices.is_empty() {
             return Err(Error::Mismatch("a descriptor has no matrix".into()));
         }
-        if self
-            .matrices
-            .iter()
-            .any(|m| m.len() != self.rows * self.cols)
-        {
+        // Checked: rows and cols come from users' JSON, and a product that
+        // wraps round could match a short matrix.
+        let cells = self.rows.checked_mul(self.cols).filter(|&c| c > 0);
+        if cells.is_none_or(|c| self.matrices.iter().any(|m| m.len() != c)) {
             return Err(Error::Mismatch(format!(
                 "a matrix does not have rows x cols = {} x {} entries",
                 self.rows, self.cols

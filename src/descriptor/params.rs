@@ -193,7 +193,13 @@ impl DescriptorParams {
                 "spherical_classes, planar_classes and linear_classes must be at least 1",
             );
         }
-        if self.spherical_classes + self.planar_classes + self.linear_classes > 10_000 {
+        // Saturating: the counts come from users' JSON, and a wrapped sum
+        // of huge counts would pass.
+        let classes = self
+            .spherical_classes
+            .saturating_add(self.planar_classes)
+            .saturating_add(self.linear_classes);
+        if classes > 10_000 {
             return invalid("too many classes (at most 10000)");
         }
         if !(self.ambiguity_threshold > 0.0 && self.ambiguity_threshold <= 1.0) {
