@@ -45,3 +45,14 @@ fn class_counts_whose_sum_wraps_round_are_refused() {
     let err = p.validate().unwrap_err().to_string();
     assert!(err.contains("too many classes"), "{err}");
 }
+
+#[test]
+fn parameters_whose_matrix_would_be_huge_are_refused() {
+    let mut p = DescriptorParams::indoor();
+    // 11 classes x 100,001 bands x 7 ranges = 7.7 million cells.
+    p.height_bands = (0..100_000).map(|i| i as f64 * 0.01).collect();
+    let err = p.validate().unwrap_err().to_string();
+    assert!(err.contains("7700077 cells"), "{err}");
+    p.height_bands.truncate(1000); // 11 x 1001 x 7 = 77,077: allowed
+    p.validate().unwrap();
+}

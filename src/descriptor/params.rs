@@ -5,6 +5,10 @@
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
 
+/// Most cells (rows x cols) one matrix F may have: 4 MB of counts. The
+/// paper's F has 77.
+pub const MAX_CELLS: usize = 1_000_000;
+
 /// How candidate orientations are chosen (rotation invariance).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
@@ -175,7 +179,8 @@ impl DescriptorParams {
         }
     }
 
-    /// Rows of F: (ns + np + nl) classes times height bands.
+    /// Rows of F: (ns + np + nl) classes times height bands (valid
+    /// parameters only: [`validate`](Self::validate) bounds the product).
     pub fn rows(&self) -> usize {
         (self.spherical_classes + self.planar_classes + self.linear_classes)
             * (self.height_bands.len() + 1)
@@ -245,6 +250,16 @@ impl DescriptorParams {
         }
         if !(8..=100_000).contains(&self.alignment_directions) {
             return invalid("alignment_directions must be in 8..=100000");
+        }
+        // Each matrix is allocated per candidate orientation and scan; this
+        // also keeps rows x cols far from wrapping round on wasm32.
+        let cells = classes
+            .saturating_mul(self.height_bands.len().saturating_add(1))
+            .saturating_mul(self.ranges.len());
+        if cells > MAX_CELLS {
+            return invalid(format!(
+                "classes x height bands x ranges make {cells} cells per matrix (at most {MAX_CELLS})"
+            ));
         }
         Ok(())
     }
