@@ -117,6 +117,43 @@ fn describe_skips_bad_files_and_distances_write_csv() {
     assert_eq!(row[1], "0");
     assert!(row[2].parse::<f32>().unwrap() > 0.0);
     assert_eq!(lines[2].split(',').nth(1), Some(row[2]));
+
+    // A DESCRIPTORS.json edited by hand or cut short is refused on loading,
+    // naming the file and the scan, by every command that reads one.
+    let good: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out_json).unwrap()).unwrap();
+    let edit = |name: &str, change: &dyn Fn(&mut serde_json::Value)| {
+        let mut v = good.clone();
+        change(&mut v);
+        let path = dir.join(name);
+        std::fs::write(&path, v.to_string()).unwrap();
+        path
+    };
+    let short = edit("short.json", &|v| {
+        v["files"][1]["descriptor"]["matrices"][0]
+            .as_array_mut()
+            .unwrap()
+            .pop();
+    });
+    let fewer_ranges = edit("ranges.json", &|v| {
+        v["params"]["ranges"].as_array_mut().unwrap().pop();
+    });
+    let negative_voxels = edit("voxels.json", &|v| {
+        v["params"]["voxel_size"] = (-1.0).into()
+    });
+    for (path, want) in [
+        (&short, "short.json: b_corridor.ply: mismatch: a matrix does not have rows x cols = 11 x 7 entries"),
+        (&fewer_ranges, "ranges.json: a_office.ply: mismatch: the descriptor is 11x7, the set's parameters make 11x6"),
+        (&negative_voxels, "voxels.json: invalid parameter: voxel_size must be positive, got -1"),
+    ] {
+        for args in [
+            &["cluster", "--method", "kmeans", "--k", "2", "--seeding", "stride", "--seed", "0"][..],
+            &["distances"][..],
+        ] {
+            let err = fails(placecat().arg(args[0]).arg(path).args(&args[1..]).arg("-o").arg(dir.join("o")));
+            assert!(err.contains(want), "{args:?}: {err}");
+        }
+    }
 }
 
 #[test]

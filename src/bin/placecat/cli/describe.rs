@@ -34,10 +34,33 @@ pub struct DescriptorSet {
 }
 
 impl DescriptorSet {
+    /// Read and check a set: its parameters, and every descriptor against
+    /// them, so a hand-edited or truncated file is refused here, naming it
+    /// and the scan, not later in a model that cannot be loaded.
     pub fn load(path: &Path) -> Result<DescriptorSet> {
         let name = path.display().to_string();
         let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&name))?;
-        serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))
+        let set: DescriptorSet =
+            serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
+        set.check().map_err(|e| e.in_file(&name))?;
+        Ok(set)
+    }
+
+    fn check(&self) -> Result<()> {
+        self.params.validate()?;
+        let (rows, cols) = (self.params.rows(), self.params.cols());
+        for f in &self.files {
+            let d = &f.descriptor;
+            d.validate().map_err(|e| e.in_file(&f.name))?;
+            if (d.rows, d.cols) != (rows, cols) {
+                return Err(Error::Mismatch(format!(
+                    "the descriptor is {}x{}, the set's parameters make {rows}x{cols}",
+                    d.rows, d.cols
+                ))
+                .in_file(&f.name));
+            }
+        }
+        Ok(())
     }
 
     /// The parameters, file names and descriptors, moved out (a large set's
