@@ -17,9 +17,9 @@ fn descriptor(rows: usize, cols: usize, matrix: Vec<u32>) -> Descriptor {
 
 #[test]
 fn a_shape_whose_product_wraps_round_is_refused() {
-    // (2^63 + 1) x 2 wraps round to 2 cells in 64 bits: the 2 counts given
-    // would pass an unchecked product.
-    let d = descriptor((1 << 63) + 1, 2, vec![1, 1]);
+    // (2^63 + 1) x 2 wraps round to 2 cells in 64 bits (2^31 + 1 in 32):
+    // the 2 counts given would pass an unchecked product.
+    let d = descriptor(usize::MAX / 2 + 2, 2, vec![1, 1]);
     let err = d.validate().unwrap_err().to_string();
     assert!(err.contains("rows x cols"), "{err}");
     let err = Space::new(&[d.clone(), d], DistanceOptions::default())
