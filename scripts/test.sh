@@ -11,9 +11,9 @@ step() { echo; echo "=== $* ==="; }
 step "cargo fmt --check"
 cargo fmt --check
 
-step "cargo clippy (native, and wasm32 with the wasm tests)"
+step "cargo clippy (native, and wasm32 with every test target)"
 cargo clippy --all-targets --release -- -D warnings
-cargo clippy --target wasm32-unknown-unknown --no-default-features --release --lib --test web --test node -- -D warnings
+cargo clippy --target wasm32-unknown-unknown --no-default-features --release --lib --tests -- -D warnings
 
 step "cargo doc (the crate's API documentation, broken links are errors)"
 RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib
