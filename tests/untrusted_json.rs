@@ -56,3 +56,16 @@ fn parameters_whose_matrix_would_be_huge_are_refused() {
     p.height_bands.truncate(1000); // 11 x 1001 x 7 = 77,077: allowed
     p.validate().unwrap();
 }
+
+#[test]
+fn a_candidate_cap_beyond_256_is_refused() {
+    let mut p = DescriptorParams::indoor();
+    p.max_alignments = 1_000_000;
+    let err = p.validate().unwrap_err().to_string();
+    assert!(
+        err.contains("max_alignments must be in 1..=256, got 1000000"),
+        "{err}"
+    );
+    p.max_alignments = 256;
+    p.validate().unwrap();
+}

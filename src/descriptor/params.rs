@@ -245,8 +245,13 @@ impl DescriptorParams {
         {
             return invalid("height_bands must be finite and strictly increasing");
         }
-        if self.max_alignments == 0 {
-            return invalid("max_alignments must be at least 1");
+        // Delta compares every candidate of one scan with every candidate of
+        // the other: 256 x 256 pairs is already 4,096 times the default's.
+        if !(1..=256).contains(&self.max_alignments) {
+            return invalid(format!(
+                "max_alignments must be in 1..=256, got {}",
+                self.max_alignments
+            ));
         }
         if !(8..=100_000).contains(&self.alignment_directions) {
             return invalid("alignment_directions must be in 8..=100000");
