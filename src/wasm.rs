@@ -270,16 +270,7 @@ impl DescriptorSet {
     }
     /// Add a descriptor after checking it fits the set's parameters.
     fn push(&mut self, d: Descriptor) -> WasmResult<usize> {
-        d.validate().map_err(js_err)?;
-        if d.rows != self.params.rows() || d.cols != self.params.cols() {
-            return Err(JsError::new(&format!(
-                "mismatch: descriptor is {}x{}, the set's parameters make {}x{}",
-                d.rows,
-                d.cols,
-                self.params.rows(),
-                self.params.cols()
-            )));
-        }
+        d.validate_for(&self.params).map_err(js_err)?;
         self.descriptors.push(d);
         self.space = None;
         self.matrix = None;

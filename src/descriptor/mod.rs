@@ -76,6 +76,21 @@ impl Descriptor {
         }
         Ok(())
     }
+
+    /// [`validate`](Self::validate), and that `params` make this shape: a
+    /// descriptor read back from JSON must match the parameters it is
+    /// filed under.
+    pub fn validate_for(&self, params: &DescriptorParams) -> Result<()> {
+        self.validate()?;
+        let (rows, cols) = (params.rows(), params.cols());
+        if (self.rows, self.cols) != (rows, cols) {
+            return Err(Error::Mismatch(format!(
+                "the descriptor is {}x{}, the set's parameters make {rows}x{cols}",
+                self.rows, self.cols
+            )));
+        }
+        Ok(())
+    }
 }
 
 /// Describe a scan given its points (sensor frame, sensor at the origin).

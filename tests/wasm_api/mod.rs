@@ -176,7 +176,26 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(e.contains("voxel_size"), "{e}");
     let typo = js_sys::JSON::parse(r#"{"voxel_sise": 2}"#).unwrap();
     assert!(message(validate_params(typo, None).err().unwrap()).contains("voxel_sise"));
-    let (mut set, _) = real_set();
+    let (mut set, scans) = real_set();
+    // A descriptor of the outdoor preset's shape (5 ranges) into an indoor
+    // set (7), and one whose counts are cut short.
+    let outdoor = describe_scan(
+        PARITY_FILES[0].1,
+        "o.bin",
+        JsValue::UNDEFINED,
+        Some("outdoor".into()),
+        None,
+    )
+    .unwrap();
+    let e = message(set.add(&outdoor).err().unwrap());
+    assert!(
+        e.contains("the descriptor is 11x5, the set's parameters make 11x7"),
+        "{e}"
+    );
+    let json = scans[0].descriptor_json().unwrap();
+    let cut = json.replacen(",0,", ",", 1);
+    let e = message(set.add_json(&cut).err().unwrap());
+    assert!(e.contains("rows x cols = 11 x 7"), "{e}");
     let e = message(set.kmeans(0, "stride", 0).err().unwrap());
     assert!(e.contains("k must be at least 1"), "{e}");
     assert!(message(set.kmeans(2, "sideways", 0).err().unwrap()).contains("sideways"));

@@ -48,17 +48,10 @@ impl DescriptorSet {
 
     fn check(&self) -> Result<()> {
         self.params.validate()?;
-        let (rows, cols) = (self.params.rows(), self.params.cols());
         for f in &self.files {
-            let d = &f.descriptor;
-            d.validate().map_err(|e| e.in_file(&f.name))?;
-            if (d.rows, d.cols) != (rows, cols) {
-                return Err(Error::Mismatch(format!(
-                    "the descriptor is {}x{}, the set's parameters make {rows}x{cols}",
-                    d.rows, d.cols
-                ))
-                .in_file(&f.name));
-            }
+            f.descriptor
+                .validate_for(&self.params)
+                .map_err(|e| e.in_file(&f.name))?;
         }
         Ok(())
     }
