@@ -154,6 +154,36 @@ fn describe_skips_bad_files_and_distances_write_csv() {
             assert!(err.contains(want), "{args:?}: {err}");
         }
     }
+
+    // Output piped into a reader that stops early (`placecat ... | head`):
+    // the command ends quietly instead of panicking in print!. 300 scans
+    // make a matrix of over 64 KiB, more than a pipe holds.
+    let mut many = good.clone();
+    let first = good["files"][0].clone();
+    many["files"] = (0..300)
+        .map(|i| {
+            let mut f = first.clone();
+            f["name"] = format!("scan_{i:03}.ply").into();
+            f
+        })
+        .collect();
+    let many_path = dir.join("many.json");
+    std::fs::write(&many_path, many.to_string()).unwrap();
+    let mut child = placecat()
+        .arg("distances")
+        .arg(&many_path)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take()); // the reader goes away before the first byte
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success() && stderr.is_empty(),
+        "{:?}: {stderr}",
+        out.status
+    );
 }
 
 #[test]

@@ -158,7 +158,7 @@ pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
         serde_json::from_value(v["labels"].clone()).map_err(|e| Error::from(e).in_file(&name))?;
     let t = truth_for(&files, truth)?;
     let ev = placecat::eval::evaluate(&t, &labels)?;
-    println!("{}", serde_json::to_string_pretty(&ev)?);
+    super::write_out(None, &format!("{}\n", serde_json::to_string_pretty(&ev)?))?;
     Ok(ExitCode::SUCCESS)
 }
 

@@ -27,14 +27,16 @@ pub fn run(file: &Path, as_json: bool) -> placecat::Result<ExitCode> {
             "sum": sum,
             "finite": cloud.finite_count(),
         });
-        println!("{v}");
+        super::write_out(None, &format!("{v}\n"))?;
     } else {
-        println!("file:   {}", file.display());
-        println!("format: {}", cloud.format.name());
-        println!("points: {} ({} finite)", pts.len(), cloud.finite_count());
-        println!("first:  {first:?}");
-        println!("last:   {last:?}");
-        println!("sum:    {sum:?}");
+        let text = format!(
+            "file:   {}\nformat: {}\npoints: {} ({} finite)\nfirst:  {first:?}\nlast:   {last:?}\nsum:    {sum:?}\n",
+            file.display(),
+            cloud.format.name(),
+            pts.len(),
+            cloud.finite_count()
+        );
+        super::write_out(None, &text)?;
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -198,8 +198,14 @@ pub(crate) fn write_out(path: Option<&std::path::Path>, text: &str) -> placecat:
         Some(p) => std::fs::write(p, text)
             .map_err(|e| placecat::Error::from(e).in_file(p.display().to_string())),
         None => {
-            print!("{text}");
-            Ok(())
+            use std::io::Write;
+            let mut out = std::io::stdout().lock();
+            match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+                // The reader went away (`placecat ... | head`): stop
+                // quietly, as Unix tools do, instead of panicking in print!.
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+                other => other.map_err(|e| placecat::Error::from(e).in_file("standard output")),
+            }
         }
     }
 }
