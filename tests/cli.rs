@@ -298,6 +298,18 @@ fn simulate_describe_cluster_evaluate_round_trip() {
         assert_eq!(c["labels"].as_array().unwrap().len(), 15);
         c
     };
+    // The descriptors given to evaluate by mistake: say what it wants.
+    let err = fails(
+        placecat()
+            .arg("evaluate")
+            .arg(&d)
+            .arg("--truth")
+            .arg(sim.join("labels.csv")),
+    );
+    assert!(
+        err.contains("d.json: mismatch: not the output of placecat cluster"),
+        "{err}"
+    );
     let km = run(
         &[
             "--method",

@@ -152,10 +152,22 @@ pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
     let name = clusters.display().to_string();
     let text = std::fs::read_to_string(clusters).map_err(|e| Error::from(e).in_file(&name))?;
     let v: Value = serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
-    let files: Vec<String> =
-        serde_json::from_value(v["files"].clone()).map_err(|e| Error::from(e).in_file(&name))?;
-    let labels: Vec<i32> =
-        serde_json::from_value(v["labels"].clone()).map_err(|e| Error::from(e).in_file(&name))?;
+    // Say what was expected: a DESCRIPTORS.json given by mistake has
+    // "files" too, but as objects.
+    let not_clusters = |e: serde_json::Error| {
+        Error::Mismatch(format!(
+            "not the output of placecat cluster (\"files\": names, \"labels\": integers): {e}"
+        ))
+        .in_file(&name)
+    };
+    let files: Vec<String> = serde_json::from_value(v["files"].clone()).map_err(not_clusters)?;
+    let labels: Vec<i32> = serde_json::from_value(v["labels"].clone()).map_err(not_clusters)?;
+    if files.len() != labels.len() {
+        return Err(
+            Error::Mismatch(format!("{} files but {} labels", files.len(), labels.len()))
+                .in_file(&name),
+        );
+    }
     let t = truth_for(&files, truth)?;
     let ev = placecat::eval::evaluate(&t, &labels)?;
     super::write_out(None, &format!("{}\n", serde_json::to_string_pretty(&ev)?))?;
