@@ -176,7 +176,7 @@ fn describe_skips_bad_files_and_distances_write_csv() {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap();
-    drop(child.stdout.take()); // the reader goes away before the first byte
+    child.stdout = None; // the reader goes away before the first byte
     let out = child.wait_with_output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
