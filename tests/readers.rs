@@ -333,7 +333,15 @@ fn poses_in_three_formats() {
         ("1 2 3\n", "3 numbers"),
         ("", "no pose rows"),
         ("0 1 2 3 0 0 0 5\n", "norm"),
-        ("a,1,x\n", "header but no"),
+        ("name,x,y\n", "header but no"),
+        // A header has words where all the numbers go; these rows do not,
+        // so they are bad rows, not headers.
+        ("a,1,x\n", "line 1: x, y, z must be finite numbers"),
+        ("a.pcd,NaN,1\n", "line 1: x, y, z must be finite numbers"),
+        (
+            "name,x,y\na.pcd,1,inf\n",
+            "line 2: x, y, z must be finite numbers",
+        ),
     ] {
         let e = poses::parse(bad).unwrap_err().to_string();
         assert!(e.contains(want), "{bad:?}: {e}");

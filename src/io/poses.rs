@@ -119,10 +119,14 @@ fn parse_csv(rows: &[(usize, &str)]) -> Result<Poses> {
         if cells.len() < 3 {
             return err(format!("line {lineno}: CSV rows need name,x,y[,z]"));
         }
-        let nums: Option<Vec<f64>> = cells[1..cells.len().min(4)]
+        let coords = &cells[1..cells.len().min(4)];
+        let nums: Option<Vec<f64>> = coords
             .iter()
             .map(|c| c.parse::<f64>().ok().filter(|v| v.is_finite()))
             .collect();
+        // A header has words where the numbers go; a row with "NaN" or one
+        // number missing is a bad row, not a header.
+        let words = coords.iter().all(|c| c.parse::<f64>().is_err());
         match nums {
             Some(v) => poses.push(Pose {
                 name: Some(cells[0].to_string()),
@@ -130,8 +134,7 @@ fn parse_csv(rows: &[(usize, &str)]) -> Result<Poses> {
                 position: [v[0], v[1], v.get(2).copied().unwrap_or(0.0)],
                 yaw: 0.0,
             }),
-            // A first row that is not numbers is a header.
-            None if i == 0 => {}
+            None if i == 0 && words => {}
             None => return err(format!("line {lineno}: x, y, z must be finite numbers")),
         }
     }
