@@ -180,7 +180,7 @@ fn diameter_table(out: &mut String, m: &DistanceMatrix, truth: &[String]) {
     }
     writeln!(
         out,
-        "\nThe widest class is {0} (diameter {1:.2}). Pairs of classes whose union is narrower, so that any threshold keeping {0} whole also merges them: {2}.\n",
+        "\nThe widest class is {0} (diameter {1:.2}). Pairs of classes whose union is narrower: {2}. A tree node holding just such a pair is no wider than {0}, so any threshold that keeps {0} whole keeps that node whole too; the two can be told apart only where the tree puts other scans with them.\n",
         classes[widest],
         d(widest, widest),
         if narrower.is_empty() { "none".to_string() } else { narrower.join(", ") }
