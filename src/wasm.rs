@@ -525,10 +525,11 @@ impl ClusterTree {
     pub fn cut_k(&self, k: usize) -> WasmResult<JsValue> {
         to_js(&self.tree.cut_k(k).map_err(js_err)?)
     }
-    /// Number of categories at threshold t.
+    /// Number of categories at threshold t; throws for a threshold that
+    /// is not a finite number >= 0, as `cut` does.
     #[wasm_bindgen(js_name = countAt)]
-    pub fn count_at(&self, threshold: f32) -> usize {
-        self.tree.count_at(threshold)
+    pub fn count_at(&self, threshold: f32) -> WasmResult<usize> {
+        self.tree.count_at(threshold).map_err(js_err)
     }
     /// scipy-style linkage, (n-1) x 4 row-major: a, b, height, count.
     pub fn linkage(&self) -> js_sys::Float64Array {

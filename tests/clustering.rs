@@ -185,13 +185,20 @@ fn tree_heights_are_diameters_and_cuts_follow_the_threshold() {
                 assert!(tree.nodes[p].height > t);
             }
         }
-        assert_eq!(cut.nodes.len(), tree.count_at(t));
+        assert_eq!(cut.nodes.len(), tree.count_at(t).unwrap());
         assert!(cut.labels.iter().all(|&l| l >= 0));
         assert!(cut.nodes.len() <= last);
         last = cut.nodes.len();
     }
     for k in 1..=6 {
         assert_eq!(tree.cut_k(k).unwrap().nodes.len(), k);
+    }
+    for bad in [f32::NAN, -0.5, f32::INFINITY] {
+        assert!(tree
+            .count_at(bad)
+            .unwrap_err()
+            .to_string()
+            .contains("threshold"));
     }
     // Linkage: n-1 rows, heights sorted, counts add up, ids refer back.
     let z = tree.linkage();

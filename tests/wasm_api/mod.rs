@@ -81,7 +81,8 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     assert_eq!(linkage.len(), 5 * 4);
     let cut = tree.cut_k(3).unwrap();
     assert_eq!(labels_of(&cut).len(), 6);
-    assert_eq!(tree.count_at(tree.root_height()), 1);
+    assert_eq!(tree.count_at(tree.root_height()).unwrap(), 1);
+    assert!(message(tree.count_at(f32::NAN).err().unwrap()).contains("threshold"));
     let db = set.dbscan(0.5, 2).unwrap().to_vec();
     assert_eq!(db.len(), 6);
 }

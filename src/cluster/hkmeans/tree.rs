@@ -33,6 +33,14 @@ pub struct Cut {
     pub nodes: Vec<usize>,
 }
 
+/// A threshold a tree can be cut at: finite and not negative.
+fn check_threshold(t: f32) -> Result<()> {
+    if !t.is_finite() || t < 0.0 {
+        return invalid(format!("threshold must be a finite number >= 0, got {t}"));
+    }
+    Ok(())
+}
+
 impl Tree {
     pub(crate) fn new(nodes: Vec<TreeNode>, n: usize) -> Tree {
         Tree { n, nodes }
@@ -41,9 +49,7 @@ impl Tree {
     /// Categories at threshold t: nodes whose height <= t and whose parent's
     /// height > t (the root alone when its height <= t).
     pub fn cut(&self, t: f32) -> Result<Cut> {
-        if !t.is_finite() || t < 0.0 {
-            return invalid(format!("threshold must be a finite number >= 0, got {t}"));
-        }
+        check_threshold(t)?;
         Ok(self.categories(t, |id| self.nodes[id].height > t))
     }
 
@@ -108,13 +114,14 @@ impl Tree {
         }
     }
 
-    /// Number of categories at threshold t.
-    pub fn count_at(&self, t: f32) -> usize {
-        1 + self
+    /// Number of categories at threshold t (as many as `cut(t)` makes).
+    pub fn count_at(&self, t: f32) -> Result<usize> {
+        check_threshold(t)?;
+        Ok(1 + self
             .nodes
             .iter()
             .filter(|n| !n.children.is_empty() && n.height > t)
-            .count()
+            .count())
     }
 
     /// scipy.cluster.hierarchy linkage matrix: n-1 rows [a, b, height, count];
