@@ -3,33 +3,10 @@
 //! quickly. The file's extension picks the reader, as in the CLI; `.json`
 //! takes the path of the `json` fuzz target (model, then descriptor).
 
-use placecat::cluster::Space;
 use placecat::io::{read_scan, ReadLimits};
-use placecat::model::LabelledModel;
-use placecat::{Descriptor, DistanceOptions};
 use std::time::{Duration, Instant};
 
-/// What fuzz/fuzz_targets/json.rs does with its input.
-fn use_json(bytes: &[u8]) {
-    let Ok(text) = std::str::from_utf8(bytes) else {
-        return;
-    };
-    if let Ok(model) = LabelledModel::from_json(text) {
-        let d = Descriptor {
-            rows: model.rows,
-            cols: model.cols,
-            matrices: vec![vec![1; model.rows * model.cols]],
-            summary: Default::default(),
-        };
-        let _ = model.classify(&d);
-    }
-    if let Ok(d) = serde_json::from_str::<Descriptor>(text) {
-        if let Ok(space) = Space::new(&[d.clone(), d], DistanceOptions::default()) {
-            let _ = space.delta(0, 1);
-            let _ = space.to_centre(&space.centre_of(0), 1);
-        }
-    }
-}
+include!("../fuzz/common/use_json.rs");
 
 #[test]
 fn every_kept_fuzz_finding_reads_or_fails_fast() {
