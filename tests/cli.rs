@@ -269,6 +269,14 @@ fn simulate_describe_cluster_evaluate_round_trip() {
 
     let d = dir.join("d.json");
     succeeds(placecat().arg("describe").arg(&sim).arg("-o").arg(&d));
+    let evaluate = |clusters: &std::path::Path| {
+        let mut cmd = placecat();
+        cmd.arg("evaluate")
+            .arg(clusters)
+            .arg("--truth")
+            .arg(sim.join("labels.csv"));
+        cmd
+    };
     let run = |args: &[&str], name: &str| -> serde_json::Value {
         let o = dir.join(name);
         succeeds(
@@ -279,13 +287,7 @@ fn simulate_describe_cluster_evaluate_round_trip() {
                 .arg("-o")
                 .arg(&o),
         );
-        let ev = succeeds(
-            placecat()
-                .arg("evaluate")
-                .arg(&o)
-                .arg("--truth")
-                .arg(sim.join("labels.csv")),
-        );
+        let ev = succeeds(&mut evaluate(&o));
         let v: serde_json::Value = serde_json::from_slice(&ev.stdout).unwrap();
         for key in ["accuracy", "ari", "score"] {
             assert!(v[key].as_f64().is_some(), "{key} missing in {v}");
@@ -299,13 +301,7 @@ fn simulate_describe_cluster_evaluate_round_trip() {
         c
     };
     // The descriptors given to evaluate by mistake: say what it wants.
-    let err = fails(
-        placecat()
-            .arg("evaluate")
-            .arg(&d)
-            .arg("--truth")
-            .arg(sim.join("labels.csv")),
-    );
+    let err = fails(&mut evaluate(&d));
     assert!(
         err.contains("d.json: mismatch: not the output of placecat cluster"),
         "{err}"
