@@ -6,6 +6,7 @@ pub mod kitti;
 pub mod pcd;
 pub mod ply;
 pub mod poses;
+pub mod recording;
 mod scalar;
 pub mod write;
 
