@@ -31,6 +31,7 @@ export function filesFromInput(list) {
   return [...list].map((file) => ({ file, name: file.webkitRelativePath || file.name }));
 }
 
+/** A file's name without its folders. @param {string} name */
 export function baseName(name) {
-  return name.split('/').pop();
+  return name.split('/').pop() ?? name;
 }
