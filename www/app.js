@@ -89,7 +89,10 @@ function startDemo(scene) {
   describeAll({ ...S.demoInputs(scene), demo: scene });
 }
 
-/** Describe every input in the worker pool, with progress; a newer run supersedes this one. */
+/**
+ * Describe every input in the worker pool, with progress; a newer run supersedes this one.
+ * @param {{datasetId: string, demo: State['demo'], inputs: import('./state.js').Input[]}} [run]
+ */
 async function describeAll({ datasetId, demo, inputs } = state) {
   if (state.running) pool.cancel();
   let params;

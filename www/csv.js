@@ -75,6 +75,7 @@ export function parseCsv(text) {
  * @returns {[string, string][]}
  */
 export function fileRows(text) {
+  /** @type {[string, string][]} */
   const out = [];
   for (const [i, row] of parseCsv(text).entries()) {
     const cells = row.map((c) => c.trim());

@@ -13,6 +13,8 @@ import { categoryIndex, colourSlots, dendrogramOf, displayName, errorText, nameO
 
 /** @param {string} id */
 export const $ = (id) => /** @type {HTMLInputElement} */ (document.getElementById(id));
+/** @param {string} id */
+const canvas = (id) => /** @type {HTMLCanvasElement} */ (document.getElementById(id));
 
 export class View {
   /**
@@ -27,8 +29,8 @@ export class View {
     this.catIndex = null;
     /** @type {number | undefined} */
     this.hovered = undefined;
-    this.dendrogram = new Dendrogram($('dendrogram'), { onThreshold: on.onThreshold, onHover: (c, e) => this.#hover(c, e) });
-    this.map = new TrajectoryMap($('map'), { onSelect: (i) => this.#select(i) });
+    this.dendrogram = new Dendrogram(canvas('dendrogram'), { onThreshold: on.onThreshold, onHover: (c, e) => this.#hover(c, e) });
+    this.map = new TrajectoryMap(canvas('map'), { onSelect: (i) => this.#select(i) });
     this.legend = new Legend(/** @type {any} */ ($('legend')), { onName: on.onName, onHighlight: (i) => this.highlight(i) });
     this.dendrogram.draw();
     this.map.draw();

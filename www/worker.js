@@ -26,6 +26,6 @@ self.onmessage = async (e) => {
     const transfer = 'preview' in r ? [r.preview.buffer] : [];
     self.postMessage({ id, ok: true, result: r }, { transfer });
   } catch (err) {
-    self.postMessage({ id, ok: false, error: String(err?.message ?? err) });
+    self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });
   }
 };
