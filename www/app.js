@@ -9,10 +9,9 @@ import { View, $, download } from './view.js';
 import * as S from './state.js';
 import { loadNames, saveNames, datasetId } from './store.js';
 import { beginSession, saveScan, lastSession } from './session.js';
-import { filesFromDrop, filesFromInput, isScan, isTruth, isPoses, baseName } from './files.js';
+import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 
 /** @typedef {import('./state.js').State} State */
-/** @typedef {import('./engine.js').Preset} Preset */
 
 let state = S.initialState();
 const engine = new Engine(wasm);
@@ -24,35 +23,24 @@ const view = new View({
     if (!saveNames(state.datasetId, state.anchors)) $('import-status').textContent = 'Could not save names in this browser; export them.';
     view.recolour(state);
   },
-  onSweepPick: (eps, minPoints) => {
-    $('eps').value = eps;
-    $('minpts').value = String(minPoints);
-    cluster();
-  },
+  onSweepPick: () => cluster(),
 });
 
-const preset = () => /** @type {Preset} */ ($('preset').value);
+const preset = () => /** @type {import('./engine.js').Preset} */ ($('preset').value);
 const showPreset = () => ($('advanced').value = JSON.stringify(engine.presetParams(preset()), null, 1));
 
 /** @param {string} name @param {string} message */
-function addError(name, message) {
-  state = S.withError(state, name, message);
-  view.errors(state);
-}
+const addError = (name, message) => view.errors((state = S.withError(state, name, message)));
 
-// ---- loading and describing -------------------------------------------------
 
 /** @param {{file: File, name: string}[]} list */
 async function loadFiles(list) {
-  const scans = list.filter((f) => isScan(f.name)).sort((a, b) => a.name.localeCompare(b.name, undefined, { numeric: true }));
-  const others = list.filter((f) => !isScan(f.name));
-  for (const f of others) {
-    if (isTruth(f.name)) await loadTruth(f.file);
-    else if (isPoses(f.name)) await loadPoses(f.file, f.name);
-  }
+  const { scans, truth, poses, other } = sortFiles(list);
+  for (const f of truth) await loadTruth(f.file);
+  for (const f of poses) await loadPoses(f.file, f.name);
   if (scans.length === 0) {
     // Only a poses file or labels.csv is fine (they apply to the scans shown).
-    if (others.some((f) => !isTruth(f.name) && !isPoses(f.name))) addError('input', 'no PLY, PCD or .bin scans among the files');
+    if (other.length) addError('input', 'no PLY, PCD or .bin scans among the files');
     if (state.scans.length) render();
     return;
   }
@@ -65,7 +53,7 @@ async function loadTruth(file) {
   try {
     state = S.withTruthCsv(state, await file.text());
   } catch (e) {
-    return addError(file.name, /** @type {Error} */ (e).message);
+    return addError(file.name, e.message);
   }
   if (state.scans.length) render();
   if ($('sweep-table').childElementCount) runSweep(); // now with S
@@ -73,11 +61,12 @@ async function loadTruth(file) {
 
 /** @param {File} file @param {string} name */
 async function loadPoses(file, name) {
+  const text = await file.text();
   try {
-    state = S.withPoses(state, engine.parsePoses(await file.text(), name));
+    state = S.withPoses(state, engine.parsePoses(text, name));
   } catch (e) {
+    addError(name, e.message);
     state = S.withPoses(state, null);
-    addError(name, /** @type {Error} */ (e).message);
   }
   if (state.scans.length) render();
 }
@@ -99,44 +88,28 @@ async function describeAll({ datasetId, demo, inputs } = state) {
   try {
     params = engine.validateParams(JSON.parse($('advanced').value || '{}'), preset());
   } catch (e) {
-    state = S.withoutResults(state);
-    view.reset(state);
-    return addError('parameters', /** @type {Error} */ (e).message);
+    view.reset((state = S.withoutResults(state)));
+    return addError('parameters', e.message);
   }
-  state = S.beginRun(state, { datasetId, demo, inputs, anchors: loadNames(datasetId), params });
-  view.reset(state);
+  view.reset((state = S.beginRun(state, { datasetId, demo, inputs, anchors: loadNames(datasetId), params })));
   const run = state.run;
   const current = () => run === state.run;
   const total = inputs.length;
-  /** @type {(import('./engine.js').ScanResult | undefined)[]} */
-  const results = new Array(total);
-  let done = 0;
-  const t0 = performance.now();
-  /** @param {'running' | 'done' | 'cancelled'} phase */
-  const tick = (phase = 'running') => current() && view.progress(done, total, (performance.now() - t0) / 1000, phase);
-  tick();
+  view.progress(0, total, 'running');
   const session = beginSession(datasetId, { total, preset: preset(), params, demo });
-  await Promise.all(inputs.map((input, i) => pool.run(S.taskOf(input, params)).then(
-    (r) => {
-      results[i] = r;
-      if (current()) session.then(() => saveScan(datasetId, i, r));
-      done++;
-    },
-    (e) => {
-      if (e.message === 'cancelled') return;
-      if (current()) addError(input.name, e.message);
-      done++;
-    },
-  ).finally(() => tick())));
+  const { results, done } = await pool.runAll(inputs.map((input) => S.taskOf(input, params)), {
+    onResult: (i, r) => current() && session.then(() => saveScan(datasetId, i, r)),
+    onError: (i, e) => current() && addError(inputs[i].name, e.message),
+    onSettled: (n) => current() && view.progress(n, total, 'running'),
+  });
   if (!current()) return;
   state = S.finishRun(state, results);
-  tick(done < total ? 'cancelled' : 'done');
+  view.progress(done, total, done < total ? 'cancelled' : 'done');
   buildSet();
   // Finished runs, for scripts that drive the page (and the e2e tests).
   document.body.dataset.runs = String(Number(document.body.dataset.runs || 0) + 1);
 }
 
-// ---- clustering ---------------------------------------------------------------
 
 function buildSet() {
   state = S.withSet(state, engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson)));
@@ -159,7 +132,7 @@ function cluster() {
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);
     state = S.withLabels(state, labels, engine.medoids(labels));
   } catch (e) {
-    return view.status(/** @type {Error} */ (e).message);
+    return view.status(e.message);
   }
   render();
 }
@@ -174,7 +147,7 @@ function cutTree(how, by) {
     const cut = 'k' in how ? engine.cutK(S.clampCategories(state, how.k)) : engine.cut(how.threshold);
     state = S.withLabels(state, cut.labels, engine.medoids(cut.labels), cut);
   } catch (e) {
-    return view.status(/** @type {Error} */ (e).message);
+    return view.status(e.message);
   }
   render();
 }
@@ -193,11 +166,10 @@ function runSweep() {
   try {
     view.sweep(engine.sweep([2, 3, 5, 8, 12], S.truthLabels(state)));
   } catch (e) {
-    view.sweep(/** @type {Error} */ (e).message);
+    view.sweep(e.message);
   }
 }
 
-// ---- export / import ----------------------------------------------------------
 
 /** @param {File} file */
 async function importFile(file) {
@@ -207,37 +179,27 @@ async function importFile(file) {
     if (file.name.toLowerCase().endsWith('.csv')) state = S.withNamesCsv(state, text);
     else {
       const categories = engine.loadModel(text); // throws on anything malformed
-      state = S.withModel(state, text);
-      $('classify').disabled = false;
       // Name current categories after the model's, where unnamed.
-      const medoidJson = (/** @type {number} */ i) => state.scans[state.categories[i].medoid].descriptorJson;
-      state = S.withNames(state, new Map(S.unnamed(state).map((i) => [i, engine.classifyJson(medoidJson(i)).name])));
+      const names = S.unnamed(state).map(([i, json]) => /** @type {[number, string]} */ ([i, engine.classifyJson(json).name]));
+      state = S.withNames(S.withModel(state, text), new Map(names));
       said = `Model loaded from ${file.name}: ${categories.map((c) => c.name).join(', ')}. New scans can be classified.`;
     }
     $('import-status').textContent = said;
     saveNames(state.datasetId, state.anchors);
     render();
   } catch (e) {
-    $('import-status').textContent = `Rejected ${file.name}: ${/** @type {Error} */ (e).message}. Nothing was changed.`;
+    $('import-status').textContent = `Rejected ${file.name}: ${e.message}. Nothing was changed.`;
   }
 }
 
-/** @param {FileList} list */
-async function classifyFiles(list) {
-  const ul = $('classified');
-  ul.replaceChildren();
-  for (const { file, name } of filesFromInput(list)) {
-    const li = ul.appendChild(document.createElement('li'));
-    try {
-      const r = await pool.run({ type: 'classify', file, name: baseName(name), modelJson: state.modelJson });
-      li.textContent = `${baseName(name)} → ${r.name} (Delta ${r.distance.toFixed(3)}${r.relative > 1 ? ', farther than any member' : ''})`;
-    } catch (e) {
-      li.textContent = /** @type {Error} */ (e).message;
-    }
-  }
+/** Classify files with the loaded model, in the workers. @param {FileList} list */
+function classifyFiles(list) {
+  view.classified(filesFromInput(list).map(({ file, name }) => {
+    const task = { type: 'classify', file, name: baseName(name), modelJson: state.modelJson };
+    return { name: task.name, result: pool.run(task) };
+  }));
 }
 
-// ---- wiring -------------------------------------------------------------------
 
 /** Show the scans of the last session (e.g. after a reload mid-run). */
 async function restore() {
@@ -252,30 +214,19 @@ async function restore() {
 
 /** @param {string} id @param {string} type @param {(e: any) => void} fn */
 const on = (id, type, fn) => $(id).addEventListener(type, fn);
-/** The first file an input holds, if any. @param {Event} e */
-const firstFile = (e) => /** @type {HTMLInputElement} */ (e.target).files?.[0];
-/** @param {Event} e */
-const inputFiles = (e) => /** @type {FileList} */ (/** @type {HTMLInputElement} */ (e.target).files);
 
 async function main() {
   await init();
   showPreset();
   view.showMethod();
-  on('files', 'change', (e) => loadFiles(filesFromInput(inputFiles(e))));
-  on('folder', 'change', (e) => loadFiles(filesFromInput(inputFiles(e))));
-  on('poses', 'change', (e) => { const f = firstFile(e); if (f) loadPoses(f, f.name); });
-  on('truth', 'change', (e) => { const f = firstFile(e); if (f) loadTruth(f); });
+  on('files', 'change', (e) => loadFiles(filesFromInput(e.target.files)));
+  on('folder', 'change', (e) => loadFiles(filesFromInput(e.target.files)));
+  on('poses', 'change', (e) => e.target.files[0] && loadPoses(e.target.files[0], e.target.files[0].name));
+  on('truth', 'change', (e) => e.target.files[0] && loadTruth(e.target.files[0]));
   on('demo-indoor', 'click', () => startDemo('indoor'));
   on('demo-outdoor', 'click', () => startDemo('outdoor'));
   on('cancel', 'click', () => state.running && pool.cancel());
-  const drop = $('drop');
-  on('drop', 'dragover', (e) => { e.preventDefault(); drop.classList.add('over'); });
-  on('drop', 'dragleave', () => drop.classList.remove('over'));
-  on('drop', 'drop', async (e) => {
-    e.preventDefault();
-    drop.classList.remove('over');
-    loadFiles(await filesFromDrop(e.dataTransfer));
-  });
+  dropZone($('drop'), loadFiles);
   on('preset', 'change', () => { showPreset(); if (state.inputs.length) describeAll(); });
   on('apply-advanced', 'click', () => state.inputs.length && describeAll());
   on('method', 'change', () => { view.showMethod(); cluster(); });
@@ -284,13 +235,9 @@ async function main() {
   on('categories', 'change', () => cutTree({ k: Number($('categories').value) }, 'categories'));
   on('sweep', 'click', runSweep);
   on('export-csv', 'click', () => state.labels && download('placecat-categories.csv', S.categoriesCsv(state), 'text/csv'));
-  on('export-model', 'click', () => {
-    if (!state.labels) return;
-    const names = state.categories.map((c, i) => /** @type {[number, string]} */ ([c.label, S.displayName(state, i)]));
-    download('placecat-model.json', engine.modelJson(state.labels, names), 'application/json');
-  });
-  on('import', 'change', (e) => { const f = firstFile(e); if (f) importFile(f); });
-  on('classify', 'change', (e) => classifyFiles(inputFiles(e)));
+  on('export-model', 'click', () => state.labels && download('placecat-model.json', engine.modelJson(state.labels, S.modelNames(state)), 'application/json'));
+  on('import', 'change', (e) => e.target.files[0] && importFile(e.target.files[0]));
+  on('classify', 'change', (e) => classifyFiles(e.target.files));
   await restore();
   document.body.dataset.ready = 'true';
 }

@@ -63,6 +63,31 @@ export class WorkerPool {
     });
   }
 
+  /**
+   * Run every task; results in task order (a hole where a task failed or
+   * was cancelled), `done` counts those that finished or failed. Each
+   * callback is called as its task settles; a cancelled task calls none.
+   * @param {any[]} tasks
+   * @param {{onResult: (i: number, r: any) => void, onError: (i: number, e: Error) => void, onSettled: (done: number) => void}} on
+   */
+  async runAll(tasks, { onResult, onError, onSettled }) {
+    const results = new Array(tasks.length);
+    let done = 0;
+    await Promise.all(tasks.map((task, i) => this.run(task).then(
+      (r) => {
+        results[i] = r;
+        done++;
+        onResult(i, r);
+      },
+      (e) => {
+        if (e.message === 'cancelled') return;
+        done++;
+        onError(i, e);
+      },
+    ).finally(() => onSettled(done))));
+    return { results, done };
+  }
+
   /** Drop queued tasks and stop running ones (their promises reject). */
   cancel() {
     const cancelled = new Error('cancelled');

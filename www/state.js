@@ -225,6 +225,11 @@ export function categoriesCsv(s) {
   return formatCsv([['file', 'category'], ...s.scans.map((r, i) => [r.name, ci[i] >= 0 ? displayName(s, ci[i]) : 'noise'])]);
 }
 
+/** [label, name] of every category, for a model. @param {State} s @returns {[number, string][]} */
+export function modelNames(s) {
+  return s.categories.map((c, i) => [c.label, displayName(s, i)]);
+}
+
 /** Names from a categories CSV: each category takes its members' most common name (throws on a malformed file). @param {State} s @param {string} text @returns {State} */
 export function withNamesCsv(s, text) {
   const table = new Map(fileRows(text).map(([f, n]) => [baseName(f), n]));
@@ -249,9 +254,9 @@ export function withModel(s, modelJson) {
   return { ...s, modelJson };
 }
 
-/** Categories with no name yet (indices), e.g. for a model to name. @param {State} s */
+/** Categories with no name yet, for a model to name: [index, its medoid's descriptor JSON]. @param {State} s @returns {[number, string][]} */
 export function unnamed(s) {
-  return s.categories.flatMap((c, i) => (nameOf(s, c) ? [] : [i]));
+  return s.categories.flatMap((c, i) => (nameOf(s, c) ? [] : [[i, s.scans[c.medoid].descriptorJson]]));
 }
 
 // ---- derived views ----------------------------------------------------------

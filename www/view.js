@@ -19,7 +19,7 @@ const canvas = (id) => /** @type {HTMLCanvasElement} */ (document.getElementById
 export class View {
   /**
    * @param {{onThreshold: (t: number) => void, onName: (i: number, name: string) => void,
-   *   onSweepPick: (eps: string, minPoints: number) => void}} on
+   *   onSweepPick: () => void}} on
    */
   constructor(on) {
     this.on = on;
@@ -29,6 +29,7 @@ export class View {
     this.catIndex = null;
     /** @type {number | undefined} */
     this.hovered = undefined;
+    this.t0 = performance.now(); // when the run began
     this.dendrogram = new Dendrogram(canvas('dendrogram'), { onThreshold: on.onThreshold, onHover: (c, e) => this.#hover(c, e) });
     this.map = new TrajectoryMap(canvas('map'), { onSelect: (i) => this.#select(i) });
     this.legend = new Legend(/** @type {any} */ ($('legend')), { onName: on.onName, onHighlight: (i) => this.highlight(i) });
@@ -41,6 +42,7 @@ export class View {
     this.s = s;
     const n = s.scans.length;
     $('threshold').value = s.lastCut ? s.lastCut.threshold.toFixed(4) : '';
+    $('classify').disabled = !s.modelJson;
     if (!s.labels || s.labels.length !== n) {
       this.dendrogram.data = null;
       this.dendrogram.draw();
@@ -104,8 +106,10 @@ export class View {
     $('errors-summary').textContent = `${s.errors.length} file(s) skipped`;
   }
 
-  /** @param {number} done @param {number} total @param {number} secs @param {'running' | 'done' | 'cancelled'} phase */
-  progress(done, total, secs, phase) {
+  /** Progress of a run (its clock starts at 0 done). @param {number} done @param {number} total @param {'running' | 'done' | 'cancelled'} phase */
+  progress(done, total, phase) {
+    if (done === 0 && phase === 'running') this.t0 = performance.now();
+    const secs = (performance.now() - this.t0) / 1000;
     const rate = done / Math.max(secs, 1e-3);
     const left = rate > 0 ? (total - done) / rate : 0;
     $('progress').hidden = false;
@@ -122,7 +126,11 @@ export class View {
       $('sweep-status').textContent = points;
       return;
     }
-    const best = renderSweep($('sweep-table'), points, this.on.onSweepPick);
+    const best = renderSweep($('sweep-table'), points, (eps, minPoints) => {
+      $('eps').value = eps;
+      $('minpts').value = String(minPoints);
+      this.on.onSweepPick();
+    });
     $('sweep-status').textContent = best
       ? `Cells: clusters · inliers, shaded by S; best S ${(best.score ?? 0).toFixed(3)} at epsilon ${f32String(best.epsilon)}, min points ${best.min_points} (outlined). Click a cell to use it.`
       : 'Cells: clusters · share of scans in one. Click a cell to use it (with labels.csv, cells are shaded by S).';
@@ -143,6 +151,24 @@ export class View {
 
   showMethod() {
     for (const div of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('[data-for]'))) div.hidden = div.dataset.for !== $('method').value;
+  }
+
+  /**
+   * Each file's classification, in order, as it arrives.
+   * @param {{name: string, result: Promise<import('./engine.js').Classification>}[]} items
+   */
+  async classified(items) {
+    const ul = $('classified');
+    ul.replaceChildren();
+    for (const { name, result } of items) {
+      const li = ul.appendChild(document.createElement('li'));
+      try {
+        const r = await result;
+        li.textContent = `${name} → ${r.name} (Delta ${r.distance.toFixed(3)}${r.relative > 1 ? ', farther than any member' : ''})`;
+      } catch (e) {
+        li.textContent = e.message;
+      }
+    }
   }
 
   /** @param {number} i category index, -1 for none */

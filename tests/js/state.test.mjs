@@ -88,7 +88,7 @@ test('importing names: each category takes its members\' most common name; a bad
   const s = S.withNamesCsv(clustered(), '\ufefffile,category\r\nx/a.ply,dock\r\nb.ply,hall\r\nc.ply,dock\r\nd.ply,\r\n');
   assert.equal(S.nameOf(s, s.categories[0]), 'dock');
   assert.equal(S.nameOf(s, s.categories[1]), '');
-  assert.deepEqual(S.unnamed(s), [1]);
+  assert.deepEqual(S.unnamed(s), [[1, '{"n":"dir/e.ply"}']]);
   assert.throws(() => S.withNamesCsv(clustered(), 'file,category\n'), /no rows/);
   assert.throws(() => S.withNamesCsv(clustered(), 'a.ply,"open\n'), /quote/);
 });
