@@ -129,13 +129,13 @@ export class TrajectoryMap {
       ctx.fillStyle = 'rgba(60, 70, 90, 0.18)';
       const budget = Math.max(1, Math.floor(200000 / scans.length));
       for (const s of scans) {
-        const p = s.preview;
-        if (!p) continue;
-        const c = Math.cos(s.pose.yaw), sn = Math.sin(s.pose.yaw);
+        const { preview: p, pose } = s;
+        if (!p || !pose) continue;
+        const c = Math.cos(pose.yaw), sn = Math.sin(pose.yaw);
         const stride = Math.max(1, Math.floor(p.length / 3 / budget)) * 3;
         for (let i = 0; i < p.length; i += stride) {
-          const wx = s.pose.position[0] + c * p[i] - sn * p[i + 1];
-          const wy = s.pose.position[1] + sn * p[i] + c * p[i + 1];
+          const wx = pose.position[0] + c * p[i] - sn * p[i + 1];
+          const wy = pose.position[1] + sn * p[i] + c * p[i + 1];
           const [x, y] = this.#screen([wx, wy]);
           if (x >= 0 && y >= 0 && x < canvas.width && y < canvas.height) ctx.fillRect(x, y, 1, 1);
         }

@@ -1,6 +1,6 @@
 // The engine on real wasm (the Node build in pkg/node/): it returns plain
 // data, frees what it replaces, and keeps the loaded model when a bad one
-// is offered. The scans are the simulated indoor demo (8 rooms x 5 scans),
+// is offered. The scans are the simulated indoor demo (8 rooms of 5 kinds, 5 scans each),
 // so the test needs no files.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
@@ -31,11 +31,13 @@ test('the describer returns plain scans: descriptor JSON, summary, preview, true
   assert.equal(scans.length, 40);
   for (const s of scans) assert.ok(plain(s), `${s.name} is plain data`);
   assert.equal(scans[0].name, 'scan_00000.ply');
-  assert.equal(scans[0].format, 'ply');
-  assert.ok(scans[0].preview instanceof Float32Array && scans[0].preview.length === 1500, `${scans[0].preview.length} preview values`);
+  assert.equal(scans[0].format, 'ply_binary_little_endian');
+  // At most 500 points of x, y, z (every k-th point: 499 here).
+  const preview = scans[0].preview;
+  assert.ok(preview instanceof Float32Array && preview.length % 3 === 0 && preview.length > 1200 && preview.length <= 1500, `${preview.length} preview values`);
   assert.equal(typeof JSON.parse(scans[0].descriptorJson), 'object');
   assert.ok(scans[0].summary.points > 1000, `${scans[0].summary.points} points`);
-  assert.equal(new Set(scans.map((s) => s.label)).size, 8, '8 kinds of room');
+  assert.equal(new Set(scans.map((s) => s.label)).size, 5, '5 kinds of room (8 rooms)');
   assert.equal(scans[0].pose.position.length, 3);
 });
 
@@ -64,7 +66,8 @@ test('hierarchical k-means: a plain tree, cuts into k and at a threshold, medoid
   assert.equal(medoids.size, 8);
   for (const [label, i] of medoids) assert.equal(cut.labels[i], label, `medoid ${i} of category ${label}`);
   const ev = e.evaluate(scans.map((s) => s.label), cut.labels);
-  assert.ok(plain(ev) && ev.total === 40 && ev.accuracy > 0.5, JSON.stringify(ev));
+  // Measured: accuracy 0.975 (one corridor scan with the offices), ARI 0.787.
+  assert.ok(plain(ev) && ev.total === 40 && ev.accuracy >= 0.95, JSON.stringify(ev));
   e.dispose();
 });
 
@@ -73,11 +76,13 @@ test('k-means, DBSCAN and the sweep return plain labels and points', () => {
   e.load(params, scans.map((s) => s.descriptorJson));
   const km = e.kmeans(8, 'stride', 0);
   assert.ok(km instanceof Int32Array && km.length === 40 && new Set(km).size === 8);
+  assert.equal(e.evaluate(scans.map((s) => s.label), km).accuracy, 1, 'stride k-means puts no room with another kind (measured)');
   const db = e.dbscan(0.5, 3);
   assert.ok(db instanceof Int32Array && db.length === 40);
   const points = e.sweep([2, 3], scans.map((s) => s.label));
   assert.ok(plain(points) && points.length % 2 === 0 && points.length >= 4);
   assert.ok(points.every((p) => typeof p.score === 'number'), 'scored against the truth');
+  assert.ok(Math.max(...points.map((p) => p.score ?? 0)) > 0.8, 'some cell scores S > 0.8 (0.832 measured)');
   assert.throws(() => e.kmeans(0, 'stride', 0), /k must be at least 1/);
   e.dispose();
 });
