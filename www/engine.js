@@ -64,7 +64,11 @@ export function scoped(obj, fn) {
   }
 }
 
-/** The clustering side (the page's main thread): one descriptor set, its last tree, a loaded model. */
+/**
+ * The clustering side (the page's main thread): one descriptor set, its
+ * last tree (kept while k-means or DBSCAN is shown, freed by the next tree
+ * or set), a loaded model.
+ */
 export class Engine {
   /** @param {Wasm} wasm */
   constructor(wasm) {
@@ -137,13 +141,11 @@ export class Engine {
 
   /** @param {number} k @param {Seeding} seeding @param {number} seed @returns {Int32Array} */
   kmeans(k, seeding, seed) {
-    this.tree.clear();
     return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0).labels);
   }
 
   /** @param {number} eps @param {number} minPoints @returns {Int32Array} */
   dbscan(eps, minPoints) {
-    this.tree.clear();
     return this.set.get('scans').dbscan(eps, minPoints);
   }
 

@@ -72,6 +72,7 @@ export class View {
 
   /** A new run: no errors, sweep, accuracy or note from the last. @param {State} s */
   reset(s) {
+    this.highlight(-1); // a category picked in the last data set
     this.errors(s);
     this.sweep('');
     this.accuracy('');
