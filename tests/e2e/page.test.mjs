@@ -273,6 +273,8 @@ test('a reload during processing keeps the results so far and the names', async 
 
 test('no console errors and no requests beyond the page origin', async () => {
   assert.deepEqual(h.problems, []);
+  // No test hook ships: the page exposes nothing on window for tests.
+  assert.equal(await h.page.evaluate(() => typeof window.placecat), 'undefined');
   const foreign = h.requests.filter((u) => !u.startsWith(h.url) && !u.startsWith('blob:') && !u.startsWith('data:'));
   assert.deepEqual(foreign, []);
 });

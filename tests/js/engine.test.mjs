@@ -41,6 +41,19 @@ test('the describer returns plain scans: descriptor JSON, summary, preview, true
   assert.equal(scans[0].pose.position.length, 3);
 });
 
+test('the describer keeps one simulator per demo and frees it for another', () => {
+  const d = new Describer(wasm);
+  const a = d.simulate({ scene: 'indoor', seed: 1, scans: 8, index: 0 }, params, 10);
+  const sim = d.simulator.value;
+  assert.equal(d.simulate({ scene: 'indoor', seed: 1, scans: 8, index: 1 }, params, 10).name, 'scan_00001.ply');
+  assert.equal(d.simulator.value, sim, 'the same demo reuses its simulator');
+  const b = d.simulate({ scene: 'indoor', seed: 2, scans: 8, index: 0 }, params, 10);
+  assert.notEqual(b.descriptorJson, a.descriptorJson, 'another seed, another scan');
+  assert.throws(() => sim.length, /null pointer|destroyed|moved/);
+  d.dispose();
+  assert.equal(d.simulator.value, null);
+});
+
 test('a damaged file is an Error naming it', () => {
   const d = new Describer(wasm);
   const bytes = new TextEncoder().encode('ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\nproperty float y\nproperty float z\nend_header\n\0\0');
