@@ -5,15 +5,29 @@ import { colour, drawThumbnail, drawPlaceholder } from './colours.js';
 
 const M = { left: 46, right: 12, top: 14, bottom: 64 };
 
+/** @typedef {import('./engine.js').TreeNode} TreeNode */
+/**
+ * What is drawn: the tree's nodes with their x, each node's category at the
+ * cut (-1 above it), each category's leaf span, and the threshold.
+ * @typedef {{nodes: TreeNode[], x: Float64Array, cat: Int32Array, spans: [number, number][], step: number,
+ *   rootHeight: number, threshold: number, top: number, central: Float32Array[], cutNodes: number[]}} Drawn
+ */
+
 export class Dendrogram {
+  /**
+   * @param {HTMLCanvasElement} canvas
+   * @param {{onThreshold: (t: number) => void, onHover: (c: number, e?: PointerEvent) => void}} on
+   */
   constructor(canvas, { onThreshold, onHover }) {
     this.canvas = canvas;
-    this.ctx = canvas.getContext('2d');
+    this.ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext('2d'));
     this.onThreshold = onThreshold;
     this.onHover = onHover;
+    /** @type {Drawn | null} */
     this.data = null;
     this.highlight = -1;
     let dragging = false;
+    /** @param {PointerEvent} e */
     const heightAt = (e) => {
       const r = canvas.getBoundingClientRect();
       const y = ((e.clientY - r.top) / r.height) * canvas.height;
@@ -43,28 +57,38 @@ export class Dendrogram {
   get plotHeight() {
     return this.canvas.height - M.top - M.bottom;
   }
+  /** Only called while there is data. */
+  get #d() {
+    return /** @type {Drawn} */ (this.data);
+  }
+  /** @param {number} h */
   #y(h) {
-    return M.top + (1 - h / this.data.top) * this.plotHeight;
+    return M.top + (1 - h / this.#d.top) * this.plotHeight;
   }
+  /** @param {number} y */
   #heightOf(y) {
-    const h = (1 - (y - M.top) / this.plotHeight) * this.data.top;
-    return Math.min(this.data.top, Math.max(0, h));
+    const h = (1 - (y - M.top) / this.plotHeight) * this.#d.top;
+    return Math.min(this.#d.top, Math.max(0, h));
   }
+  /** @param {PointerEvent} e */
   #categoryAt(e) {
     const r = this.canvas.getBoundingClientRect();
     const x = ((e.clientX - r.left) / r.width) * this.canvas.width;
-    return this.data.spans.findIndex(([a, b]) => x >= a - this.data.step / 2 && x <= b + this.data.step / 2);
+    const { spans, step } = this.#d;
+    return spans.findIndex(([a, b]) => x >= a - step / 2 && x <= b + step / 2);
   }
 
   /**
    * nodes: the tree's nodes; cutNodes: the tree node of each category;
    * central: per category, the preview points of its most central scan.
+   * @param {{nodes: TreeNode[], rootHeight: number, threshold: number, cutNodes: number[], central: Float32Array[]}} tree
    */
   set({ nodes, rootHeight, threshold, cutNodes, central }) {
+    /** @type {number[]} */
     const leaves = [];
     const stack = [0];
     while (stack.length) {
-      const id = stack.pop();
+      const id = /** @type {number} */ (stack.pop());
       if (nodes[id].children.length === 0) leaves.push(id);
       else for (let i = nodes[id].children.length - 1; i >= 0; i--) stack.push(nodes[id].children[i]);
     }
@@ -73,10 +97,12 @@ export class Dendrogram {
     const x = new Float64Array(nodes.length);
     leaves.forEach((id, i) => (x[id] = M.left + (i + 0.5) * step));
     // Internal nodes: the middle of their children (post-order).
+    /** @type {number[]} */
     const order = [];
+    /** @type {[number, boolean][]} */
     const st = [[0, false]];
     while (st.length) {
-      const [id, done] = st.pop();
+      const [id, done] = /** @type {[number, boolean]} */ (st.pop());
       if (done || nodes[id].children.length === 0) order.push(id);
       else {
         st.push([id, true]);
@@ -89,12 +115,13 @@ export class Dendrogram {
     }
     // Category of each node at the cut (-1 above the cut).
     const cat = new Int32Array(nodes.length).fill(-1);
+    /** @type {[number, number][]} */
     const spans = [];
     cutNodes.forEach((root, c) => {
       const s = [root];
       let lo = Infinity, hi = -Infinity;
       while (s.length) {
-        const id = s.pop();
+        const id = /** @type {number} */ (s.pop());
         cat[id] = c;
         if (nodes[id].children.length === 0) {
           lo = Math.min(lo, x[id]);
@@ -108,6 +135,7 @@ export class Dendrogram {
     this.draw();
   }
 
+  /** @param {number} c */
   setHighlight(c) {
     this.highlight = c;
     this.draw();

@@ -26,11 +26,39 @@ export async function filesFromDrop(dataTransfer) {
   return out;
 }
 
+/**
+ * Files by kind: scans (in natural name order), labels.csv files, poses
+ * files and the rest. @template {{name: string}} F @param {F[]} list
+ */
+export function sortFiles(list) {
+  const scans = list.filter((f) => isScan(f.name)).sort((a, b) => a.name.localeCompare(b.name, undefined, { numeric: true }));
+  const truth = list.filter((f) => !isScan(f.name) && isTruth(f.name));
+  const poses = list.filter((f) => !isScan(f.name) && !isTruth(f.name) && isPoses(f.name));
+  const other = list.filter((f) => !isScan(f.name) && !isTruth(f.name) && !isPoses(f.name));
+  return { scans, truth, poses, other };
+}
+
+/** Make `el` take dropped files and folders, handing them to `onFiles`.
+ * @param {HTMLElement} el @param {(files: {file: File, name: string}[]) => void} onFiles */
+export function dropZone(el, onFiles) {
+  el.addEventListener('dragover', (e) => {
+    e.preventDefault();
+    el.classList.add('over');
+  });
+  el.addEventListener('dragleave', () => el.classList.remove('over'));
+  el.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    el.classList.remove('over');
+    if (e.dataTransfer) onFiles(await filesFromDrop(e.dataTransfer));
+  });
+}
+
 /** Normalise a FileList (from an input) to [{file, name}]. */
 export function filesFromInput(list) {
   return [...list].map((file) => ({ file, name: file.webkitRelativePath || file.name }));
 }
 
+/** A file's name without its folders. @param {string} name */
 export function baseName(name) {
-  return name.split('/').pop();
+  return name.split('/').pop() ?? name;
 }

@@ -3,16 +3,23 @@
 // Without poses: a strip of categories along the scan sequence (Fig. 4, 6).
 import { colour, drawPlaceholder } from './colours.js';
 
+/** @typedef {{name: string, pose?: import('./engine.js').Pose, preview?: Float32Array}} MapScan */
+/** @typedef {{scans: MapScan[], labels: Int32Array, usePoses: boolean}} MapData */
+
 export class TrajectoryMap {
+  /** @param {HTMLCanvasElement} canvas @param {{onSelect: (i: number) => void}} on */
   constructor(canvas, { onSelect }) {
     this.canvas = canvas;
-    this.ctx = canvas.getContext('2d');
+    this.ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext('2d'));
     this.onSelect = onSelect;
+    /** @type {MapData | null} */
     this.data = null;
     this.view = { s: 1, ox: 0, oy: 0 };
     this.selected = -1;
     this.highlight = -1;
+    /** @type {{start: number[], view: {s: number, ox: number, oy: number}, moved: boolean} | null} */
     let drag = null;
+    /** @param {PointerEvent | WheelEvent} e */
     const pos = (e) => {
       const r = canvas.getBoundingClientRect();
       return [((e.clientX - r.left) / r.width) * canvas.width, ((e.clientY - r.top) / r.height) * canvas.height];
@@ -47,7 +54,7 @@ export class TrajectoryMap {
     }, { passive: false });
   }
 
-  /** scans: [{name, pose?, preview}], labels: Int32Array-like. */
+  /** Scans (a pose each when usePoses) and each one's category index. @param {MapData} data */
   set({ scans, labels, usePoses }) {
     this.data = { scans, labels, usePoses };
     this.selected = -1;
@@ -55,11 +62,13 @@ export class TrajectoryMap {
     this.draw();
   }
 
+  /** @param {number} c */
   setHighlight(c) {
     this.highlight = c;
     this.draw();
   }
 
+  /** @param {number} i */
   select(i) {
     this.selected = i;
     this.draw();
@@ -73,16 +82,21 @@ export class TrajectoryMap {
       x0 = Math.min(x0, x); x1 = Math.max(x1, x);
       y0 = Math.min(y0, y); y1 = Math.max(y1, y);
     }
-    const pad = this.data.usePoses ? 15 : 0;
+    const pad = this.#d.usePoses ? 15 : 0;
     x0 -= pad; x1 += pad; y0 -= pad; y1 += pad;
     const s = Math.min((w - 40) / Math.max(x1 - x0, 1e-6), (h - 40) / Math.max(y1 - y0, 1e-6));
     this.view = { s, ox: w / 2 - ((x0 + x1) / 2) * s, oy: h / 2 + ((y0 + y1) / 2) * s };
   }
 
-  /** World (or strip) position of each scan. */
+  /** Only called while there is data. */
+  get #d() {
+    return /** @type {MapData} */ (this.data);
+  }
+
+  /** World (or strip) position of each scan. @returns {[number, number][]} */
   #positions() {
-    const { scans, usePoses, labels } = this.data;
-    if (usePoses) return scans.map((s) => [s.pose.position[0], s.pose.position[1]]);
+    const { scans, usePoses, labels } = this.#d;
+    if (usePoses) return scans.map((s) => { const p = /** @type {import('./engine.js').Pose} */ (s.pose).position; return [p[0], p[1]]; });
     // Strip: x = sequence index, y = category row.
     return scans.map((_, i) => [i, -Math.max(-1, labels?.[i] ?? 0) * 3]);
   }
@@ -115,13 +129,13 @@ export class TrajectoryMap {
       ctx.fillStyle = 'rgba(60, 70, 90, 0.18)';
       const budget = Math.max(1, Math.floor(200000 / scans.length));
       for (const s of scans) {
-        const p = s.preview;
-        if (!p) continue;
-        const c = Math.cos(s.pose.yaw), sn = Math.sin(s.pose.yaw);
+        const { preview: p, pose } = s;
+        if (!p || !pose) continue;
+        const c = Math.cos(pose.yaw), sn = Math.sin(pose.yaw);
         const stride = Math.max(1, Math.floor(p.length / 3 / budget)) * 3;
         for (let i = 0; i < p.length; i += stride) {
-          const wx = s.pose.position[0] + c * p[i] - sn * p[i + 1];
-          const wy = s.pose.position[1] + sn * p[i] + c * p[i + 1];
+          const wx = pose.position[0] + c * p[i] - sn * p[i + 1];
+          const wy = pose.position[1] + sn * p[i] + c * p[i + 1];
           const [x, y] = this.#screen([wx, wy]);
           if (x >= 0 && y >= 0 && x < canvas.width && y < canvas.height) ctx.fillRect(x, y, 1, 1);
         }

@@ -2,11 +2,17 @@
 // Tasks queue; each worker takes one at a time. A worker that dies (an
 // uncaught error, out of memory) fails only its task and is replaced.
 
+/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void}} Job */
+/** @typedef {{worker: Worker, job: Job | null}} WorkerSlot */
+
 export class WorkerPool {
+  /** @param {URL} url the worker module @param {number} [size] */
   constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2)) {
     this.url = url;
     this.size = size;
+    /** @type {Job[]} */
     this.queue = [];
+    /** @type {WorkerSlot[]} */
     this.slots = [];
     this.nextId = 1;
     for (let i = 0; i < size; i++) this.slots.push(this.#spawn());
@@ -14,6 +20,7 @@ export class WorkerPool {
 
   #spawn() {
     const worker = new Worker(this.url, { type: 'module' });
+    /** @type {WorkerSlot} */
     const slot = { worker, job: null };
     worker.onmessage = (e) => {
       const job = slot.job;
@@ -23,6 +30,7 @@ export class WorkerPool {
       else job.reject(new Error(e.data.error));
       this.#pump();
     };
+    /** @param {Event & {message?: string}} [e] */
     const die = (e) => {
       e?.preventDefault?.();
       const job = slot.job;
@@ -41,18 +49,43 @@ export class WorkerPool {
   #pump() {
     for (const slot of this.slots) {
       if (slot.job || this.queue.length === 0) continue;
-      const job = this.queue.shift();
+      const job = /** @type {Job} */ (this.queue.shift());
       slot.job = job;
       slot.worker.postMessage({ id: job.id, task: job.task });
     }
   }
 
-  /** Run a task on the next free worker. */
+  /** Run a task on the next free worker. @param {any} task @returns {Promise<any>} */
   run(task) {
     return new Promise((resolve, reject) => {
       this.queue.push({ id: this.nextId++, task, resolve, reject });
       this.#pump();
     });
+  }
+
+  /**
+   * Run every task; results in task order (a hole where a task failed or
+   * was cancelled), `done` counts those that finished or failed. Each
+   * callback is called as its task settles; a cancelled task calls none.
+   * @param {any[]} tasks
+   * @param {{onResult: (i: number, r: any) => void, onError: (i: number, e: Error) => void, onSettled: (done: number) => void}} on
+   */
+  async runAll(tasks, { onResult, onError, onSettled }) {
+    const results = new Array(tasks.length);
+    let done = 0;
+    await Promise.all(tasks.map((task, i) => this.run(task).then(
+      (r) => {
+        results[i] = r;
+        done++;
+        onResult(i, r);
+      },
+      (e) => {
+        if (e.message === 'cancelled') return;
+        done++;
+        onError(i, e);
+      },
+    ).finally(() => onSettled(done))));
+    return { results, done };
   }
 
   /** Drop queued tasks and stop running ones (their promises reject). */

@@ -18,6 +18,7 @@ export async function start() {
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
   });
   const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 1000 } });
+  await context.addInitScript(dieOnFile);
   const page = await context.newPage();
   const problems = [];
   const requests = [];
@@ -33,6 +34,31 @@ export async function start() {
       server.close();
     },
   };
+}
+
+/**
+ * Fault injection from outside the page (it ships no test hook): wraps
+ * Worker.prototype.postMessage so that the task for the file named in
+ * globalThis.crashOnFile is never answered and its worker dies as one that
+ * runs out of memory does, terminated with an error event on the Worker.
+ * Runs in the page before its scripts (context.addInitScript).
+ */
+function dieOnFile() {
+  const post = Worker.prototype.postMessage;
+  /** @this {Worker} */
+  Worker.prototype.postMessage = function (message, ...rest) {
+    const name = message?.task?.name;
+    if (!name || name !== globalThis.crashOnFile) return post.call(this, message, ...rest);
+    setTimeout(() => {
+      this.terminate();
+      this.dispatchEvent(new ErrorEvent('error', { message: 'worker crashed on purpose', cancelable: true }));
+    });
+  };
+}
+
+/** Make the worker that gets `name` die (null: none). */
+export function crashOn(page, name) {
+  return page.evaluate((n) => { globalThis.crashOnFile = n; }, name);
 }
 
 /** Count canvas pixels that are not transparent or white. */

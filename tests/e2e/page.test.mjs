@@ -4,7 +4,8 @@ import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { start, inkedPixels, afterRun, ARTIFACTS, REAL } from './harness.mjs';
+import { formatCsv, parseCsv } from '../../www/csv.js';
+import { start, inkedPixels, afterRun, crashOn, ARTIFACTS, REAL } from './harness.mjs';
 
 const groups = readFileSync(join(REAL, 'groups.csv'), 'utf8').trim().split('\n').slice(1).map((l) => l.split(',')[0]);
 const tmp = mkdtempSync(join(tmpdir(), 'placecat-e2e-'));
@@ -151,6 +152,33 @@ test('the model exports, a malformed one is rejected, a good one loads', async (
   await h.page.waitForFunction(() => /room_scan1\.pcd →/.test(document.getElementById('classified').textContent));
 });
 
+test('the categories CSV survives its own import: export, import, export give the same bytes for hostile names', async () => {
+  const exportCsv = async () => {
+    const [download] = await Promise.all([h.page.waitForEvent('download'), h.page.click('#export-csv')]);
+    return readFileSync(await download.path(), 'utf8');
+  };
+  const importCsv = async (name, text) => {
+    const file = join(tmp, name);
+    writeFileSync(file, text);
+    await h.page.setInputFiles('#import', file);
+    await h.page.waitForFunction((n) => document.getElementById('import-status').textContent === `Names imported from ${n}.`, name);
+  };
+  // Every category renamed to a hostile name: a comma and quotes, a line break, non-ASCII.
+  const hostile = ['lab, "wet"', 'first line\nsecond line', 'Küche – 2. Stock, 東京'];
+  const rows = parseCsv(await exportCsv());
+  const kinds = [...new Set(rows.slice(1).map((r) => r[1]))];
+  assert.ok(kinds.length >= 3, `${kinds.length} categories`);
+  const renamed = rows.map((r, i) => (i === 0 ? r : [r[0], hostile[kinds.indexOf(r[1]) % 3] + (kinds.indexOf(r[1]) >= 3 ? ` ${kinds.indexOf(r[1])}` : '')]));
+  await importCsv('hostile.csv', formatCsv(renamed));
+  const first = await exportCsv();
+  assert.deepEqual(parseCsv(first), renamed, 'each scan exported with its hostile name');
+  assert.match(first, /^file,category\n.*,"lab, ""wet"""\n/s);
+  const names = await h.page.$$eval('#legend input', (xs) => xs.map((x) => x.value));
+  assert.ok(names.includes('lab, "wet"'), `legend: ${names}`);
+  await importCsv('exported.csv', first);
+  assert.equal(await exportCsv(), first);
+});
+
 test('KITTI scans with a poses file draw a trajectory map', async () => {
   const dir = join(REAL, 'kitti00');
   await afterRun(h.page, () => h.page.setInputFiles('#files', ['000094.bin', '000095.bin', '000198.bin', '000199.bin', 'poses.txt'].map((f) => join(dir, f))));
@@ -202,9 +230,9 @@ test('the DBSCAN sweep shades cells by S and a click clusters with that cell', a
 });
 
 test('a worker that dies mid-file is replaced, the file reported, the rest described', async () => {
-  await h.page.evaluate(() => { window.placecat.crashOn = '000095.bin'; });
+  await crashOn(h.page, '000095.bin');
   await afterRun(h.page, () => h.page.setInputFiles('#files', realFiles));
-  await h.page.evaluate(() => { window.placecat.crashOn = null; });
+  await crashOn(h.page, null);
   const errors = await h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent));
   assert.equal(errors.length, 1);
   assert.match(errors[0], /000095\.bin: the worker failed/);
@@ -245,6 +273,8 @@ test('a reload during processing keeps the results so far and the names', async 
 
 test('no console errors and no requests beyond the page origin', async () => {
   assert.deepEqual(h.problems, []);
+  // No test hook ships: the page exposes nothing on window for tests.
+  assert.equal(await h.page.evaluate(() => typeof window.placecat), 'undefined');
   const foreign = h.requests.filter((u) => !u.startsWith(h.url) && !u.startsWith('blob:') && !u.startsWith('data:'));
   assert.deepEqual(foreign, []);
 });

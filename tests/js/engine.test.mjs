@@ -1,0 +1,157 @@
+// The engine on real wasm (the Node build in pkg/node/): it returns plain
+// data, frees what it replaces, and keeps the loaded model when a bad one
+// is offered. The scans are the simulated indoor demo (8 rooms of 5 kinds, 5 scans each),
+// so the test needs no files.
+import { test, before } from 'node:test';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import { Engine, Describer, Slot, scoped } from '../../www/engine.js';
+
+const wasm = createRequire(import.meta.url)('../../pkg/node/placecat.js');
+const PLAIN = new Set([Object.prototype, Array.prototype, Map.prototype, Int32Array.prototype, Float32Array.prototype, Float64Array.prototype, Uint32Array.prototype, Uint8Array.prototype]);
+
+/** True when v holds only plain data: no wasm object anywhere in it. */
+function plain(v) {
+  if (v === null || typeof v !== 'object') return typeof v !== 'function';
+  if (!PLAIN.has(Object.getPrototypeOf(v))) return false;
+  if (ArrayBuffer.isView(v)) return true;
+  return [...(v instanceof Map ? v.values() : Object.values(v))].every(plain);
+}
+
+let scans; // the 40 described demo scans
+let params;
+before(() => {
+  const d = new Describer(wasm);
+  params = wasm.presetParams('indoor');
+  scans = Array.from({ length: 40 }, (_, index) => d.simulate({ scene: 'indoor', seed: 1, scans: 8, index }, params, 500));
+  d.dispose();
+});
+
+test('the describer returns plain scans: descriptor JSON, summary, preview, true label and pose', () => {
+  assert.equal(scans.length, 40);
+  for (const s of scans) assert.ok(plain(s), `${s.name} is plain data`);
+  assert.equal(scans[0].name, 'scan_00000.ply');
+  assert.equal(scans[0].format, 'ply_binary_little_endian');
+  // At most 500 points of x, y, z (every k-th point: 499 here).
+  const preview = scans[0].preview;
+  assert.ok(preview instanceof Float32Array && preview.length % 3 === 0 && preview.length > 1200 && preview.length <= 1500, `${preview.length} preview values`);
+  assert.equal(typeof JSON.parse(scans[0].descriptorJson), 'object');
+  assert.ok(scans[0].summary.points > 1000, `${scans[0].summary.points} points`);
+  assert.equal(new Set(scans.map((s) => s.label)).size, 5, '5 kinds of room (8 rooms)');
+  assert.equal(scans[0].pose.position.length, 3);
+});
+
+test('the describer keeps one simulator per demo and frees it for another', () => {
+  const d = new Describer(wasm);
+  const a = d.simulate({ scene: 'indoor', seed: 1, scans: 8, index: 0 }, params, 10);
+  const sim = d.simulator.value;
+  assert.equal(d.simulate({ scene: 'indoor', seed: 1, scans: 8, index: 1 }, params, 10).name, 'scan_00001.ply');
+  assert.equal(d.simulator.value, sim, 'the same demo reuses its simulator');
+  const b = d.simulate({ scene: 'indoor', seed: 2, scans: 8, index: 0 }, params, 10);
+  assert.notEqual(b.descriptorJson, a.descriptorJson, 'another seed, another scan');
+  assert.throws(() => sim.length, /null pointer|destroyed|moved/);
+  d.dispose();
+  assert.equal(d.simulator.value, null);
+});
+
+test('a damaged file is an Error naming it', () => {
+  const d = new Describer(wasm);
+  const bytes = new TextEncoder().encode('ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\nproperty float y\nproperty float z\nend_header\n\0\0');
+  assert.throws(() => d.describe(bytes, 'broken.ply', params), /^Error: broken\.ply: .*truncated/);
+  d.dispose();
+});
+
+test('hierarchical k-means: a plain tree, cuts into k and at a threshold, medoids inside their categories', () => {
+  const e = new Engine(wasm);
+  assert.deepEqual(e.load(params, scans.map((s) => s.descriptorJson)), { size: 40, usesMatrix: true, matrixLimit: 5000 });
+  assert.throws(() => e.cut(0.3), /no tree yet/);
+  const tree = e.hkmeans(0);
+  assert.ok(plain(tree));
+  assert.equal(tree.nodes[0].members.length, 40);
+  assert.ok(tree.rootHeight > 0 && tree.rootHeight === tree.nodes[0].height);
+  const cut = e.cutK(8);
+  assert.ok(plain(cut) && cut.labels instanceof Int32Array && cut.labels.length === 40);
+  assert.equal(cut.nodes.length, 8);
+  assert.equal(new Set(cut.labels).size, 8);
+  // The same tree at that cut's threshold gives the same categories back.
+  assert.equal(e.cut(cut.threshold).nodes.length, 8);
+  const medoids = e.medoids(cut.labels);
+  assert.equal(medoids.size, 8);
+  for (const [label, i] of medoids) assert.equal(cut.labels[i], label, `medoid ${i} of category ${label}`);
+  const ev = e.evaluate(scans.map((s) => s.label), cut.labels);
+  // Measured: accuracy 0.975 (one corridor scan with the offices), ARI 0.787.
+  assert.ok(plain(ev) && ev.total === 40 && ev.accuracy >= 0.95, JSON.stringify(ev));
+  e.dispose();
+});
+
+test('k-means, DBSCAN and the sweep return plain labels and points', () => {
+  const e = new Engine(wasm);
+  e.load(params, scans.map((s) => s.descriptorJson));
+  const km = e.kmeans(8, 'stride', 0);
+  assert.ok(km instanceof Int32Array && km.length === 40 && new Set(km).size === 8);
+  assert.equal(e.evaluate(scans.map((s) => s.label), km).accuracy, 1, 'stride k-means puts no room with another kind (measured)');
+  const db = e.dbscan(0.5, 3);
+  assert.ok(db instanceof Int32Array && db.length === 40);
+  const points = e.sweep([2, 3], scans.map((s) => s.label));
+  assert.ok(plain(points) && points.length % 2 === 0 && points.length >= 4);
+  assert.ok(points.every((p) => typeof p.score === 'number'), 'scored against the truth');
+  assert.ok(Math.max(...points.map((p) => p.score ?? 0)) > 0.8, 'some cell scores S > 0.8 (0.832 measured)');
+  assert.throws(() => e.kmeans(0, 'stride', 0), /k must be at least 1/);
+  e.dispose();
+});
+
+test('a new set frees the old one and its tree; dispose frees everything', () => {
+  const e = new Engine(wasm);
+  e.load(params, scans.slice(0, 10).map((s) => s.descriptorJson));
+  e.hkmeans(0);
+  const [oldSet, oldTree] = [e.set.value, e.tree.value];
+  e.load(params, scans.map((s) => s.descriptorJson));
+  // A freed wasm object refuses every call.
+  assert.throws(() => oldSet.length, /null pointer|destroyed|moved/);
+  assert.throws(() => oldTree.rootHeight(), /null pointer|destroyed|moved/);
+  assert.equal(e.tree.value, null);
+  const set = e.set.value;
+  e.dispose();
+  assert.throws(() => set.length, /null pointer|destroyed|moved/);
+  assert.throws(() => e.kmeans(2, 'stride', 0), /no scans yet/);
+});
+
+test('a model: built as JSON, loaded, classifies; a malformed one throws and the loaded one stays', () => {
+  const e = new Engine(wasm);
+  e.load(params, scans.map((s) => s.descriptorJson));
+  e.hkmeans(0);
+  const { labels } = e.cutK(8);
+  const names = [...new Set(labels)].sort((a, b) => a - b).map((l) => [l, `room ${l}`]);
+  const json = e.modelJson(labels, names);
+  assert.equal(JSON.parse(json).format, 'placecat-model/1');
+  const categories = e.loadModel(json);
+  assert.ok(plain(categories));
+  assert.deepEqual(categories.map((c) => c.name).sort(), names.map((n) => n[1]).sort());
+  const first = e.classifyJson(scans[0].descriptorJson);
+  assert.ok(plain(first));
+  assert.equal(first.name, `room ${labels[0]}`);
+  assert.throws(() => e.loadModel('{"format": "placecat-model/1", "categories": 3}'), /^Error: model: /);
+  assert.deepEqual(e.classifyJson(scans[0].descriptorJson), first);
+  // The describer classifies a file's bytes with the same model.
+  const d = new Describer(wasm);
+  const sim = new wasm.Simulator('indoor', 1, 8);
+  const bytes = scoped(sim, (s) => s.scan(0).bytes);
+  assert.equal(d.classify(bytes, 'scan_00000.ply', json).name, first.name);
+  d.dispose();
+  e.dispose();
+});
+
+test('Slot frees what it held when it takes another; scoped frees even when the work throws', () => {
+  const freed = [];
+  const obj = (id) => ({ id, free: () => freed.push(id) });
+  const slot = new Slot();
+  assert.throws(() => slot.get('tree'), /no tree yet/);
+  slot.set(obj(1));
+  slot.set(obj(2));
+  assert.deepEqual(freed, [1]);
+  slot.clear();
+  assert.deepEqual(freed, [1, 2]);
+  assert.throws(() => scoped(obj(3), () => { throw new Error('boom'); }), /boom/);
+  assert.equal(scoped(obj(4), (o) => o.id * 10), 40);
+  assert.deepEqual(freed, [1, 2, 3, 4]);
+});

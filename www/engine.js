@@ -1,0 +1,255 @@
+// The only code that touches wasm objects. Every object it makes is freed
+// here (a Slot frees what it held when it takes another; `scoped` frees a
+// temporary); callers get plain JS data. The wasm module is a parameter, so
+// the page passes its web build and the unit tests the Node build.
+
+/** @typedef {typeof import('./pkg/placecat.js')} Wasm */
+/** @typedef {import('./pkg/placecat.js').DescriptorParams} DescriptorParams */
+/** @typedef {Required<DescriptorParams>} Params */
+/** @typedef {import('./pkg/placecat.js').TreeNode} TreeNode */
+/** @typedef {import('./pkg/placecat.js').Summary} Summary */
+/** @typedef {import('./pkg/placecat.js').Pose} Pose */
+/** @typedef {import('./pkg/placecat.js').Poses} Poses */
+/** @typedef {import('./pkg/placecat.js').SweepPoint} SweepPoint */
+/** @typedef {import('./pkg/placecat.js').Evaluation} Evaluation */
+/** @typedef {import('./pkg/placecat.js').Classification} Classification */
+/** @typedef {import('./pkg/placecat.js').CategorySummary} CategorySummary */
+/** @typedef {import('./pkg/placecat.js').Preset} Preset */
+/** @typedef {import('./pkg/placecat.js').Seeding} Seeding */
+
+/**
+ * One described scan as plain data (what a worker sends back).
+ * @typedef {{name: string, format: string, descriptorJson: string, summary: Summary,
+ *   preview: Float32Array, label?: string, pose?: Pose}} ScanResult
+ */
+/** A tree as plain data: its nodes (node 0 is the root) and the root's height.
+ * @typedef {{nodes: TreeNode[], rootHeight: number}} TreeData */
+/** A cut: each scan's category, the tree node of each category, the threshold.
+ * @typedef {{labels: Int32Array, nodes: number[], threshold: number}} CutData */
+
+/** @typedef {{free(): void}} Freeable */
+
+/** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
+export class Slot {
+  /** @type {T | null} */
+  value = null;
+
+  /** @param {T | null} next */
+  set(next) {
+    if (this.value !== next) this.value?.free();
+    this.value = next;
+  }
+
+  clear() {
+    this.set(null);
+  }
+
+  /** @param {string} what what the slot must hold, for the error */
+  get(what) {
+    if (!this.value) throw new Error(`no ${what} yet`);
+    return this.value;
+  }
+}
+
+/**
+ * Run `fn` on a wasm object and free it afterwards, whatever happens.
+ * @template {Freeable} T @template R
+ * @param {T} obj @param {(obj: T) => R} fn @returns {R}
+ */
+export function scoped(obj, fn) {
+  try {
+    return fn(obj);
+  } finally {
+    obj.free();
+  }
+}
+
+/**
+ * The clustering side (the page's main thread): one descriptor set, its
+ * last tree (kept while k-means or DBSCAN is shown, freed by the next tree
+ * or set), a loaded model.
+ */
+export class Engine {
+  /** @param {Wasm} wasm */
+  constructor(wasm) {
+    this.wasm = wasm;
+    /** @type {Slot<import('./pkg/placecat.js').DescriptorSet>} */
+    this.set = new Slot();
+    /** @type {Slot<import('./pkg/placecat.js').ClusterTree>} */
+    this.tree = new Slot();
+    /** @type {Slot<import('./pkg/placecat.js').Model>} */
+    this.model = new Slot();
+  }
+
+  /** @param {Preset} preset @returns {Params} */
+  presetParams(preset) {
+    return this.wasm.presetParams(preset);
+  }
+
+  /** Complete and check parameters; throws naming the bad one. @param {Partial<DescriptorParams>} partial @param {Preset} preset @returns {Params} */
+  validateParams(partial, preset) {
+    return this.wasm.validateParams(partial, preset);
+  }
+
+  /** @param {string} text @param {string} fileName @returns {Poses} */
+  parsePoses(text, fileName) {
+    return this.wasm.parsePoses(text, fileName);
+  }
+
+  /** Accuracy, ARI and S of labels against ground truth. @param {string[]} truth @param {Int32Array} labels @returns {Evaluation} */
+  evaluate(truth, labels) {
+    return this.wasm.DescriptorSet.evaluate(truth, labels);
+  }
+
+  /**
+   * A new set from descriptors (the old set and tree are freed).
+   * @param {Params} params @param {string[]} descriptorJsons
+   * @returns {{size: number, usesMatrix: boolean, matrixLimit: number}}
+   */
+  load(params, descriptorJsons) {
+    this.tree.clear();
+    this.set.clear();
+    const set = new this.wasm.DescriptorSet(params, undefined);
+    try {
+      for (const json of descriptorJsons) set.addJson(json);
+    } catch (e) {
+      set.free();
+      throw e;
+    }
+    this.set.set(set);
+    return { size: set.length, usesMatrix: set.usesMatrix, matrixLimit: set.matrixLimit };
+  }
+
+  /** Hierarchical k-means++; the tree is kept for cuts. @param {number} seed @returns {TreeData} */
+  hkmeans(seed) {
+    this.tree.clear();
+    this.tree.set(this.set.get('scans').hkmeans(seed >>> 0));
+    const tree = this.tree.get('tree');
+    return { nodes: tree.nodes(), rootHeight: tree.rootHeight() };
+  }
+
+  /** The kept tree cut at a threshold. @param {number} threshold @returns {CutData} */
+  cut(threshold) {
+    return cutData(this.tree.get('tree').cut(threshold), threshold);
+  }
+
+  /** The kept tree cut into k categories. @param {number} k @returns {CutData} */
+  cutK(k) {
+    const cut = this.tree.get('tree').cutK(k);
+    return cutData(cut, cut.threshold);
+  }
+
+  /** @param {number} k @param {Seeding} seeding @param {number} seed @returns {Int32Array} */
+  kmeans(k, seeding, seed) {
+    return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0).labels);
+  }
+
+  /** @param {number} eps @param {number} minPoints @returns {Int32Array} */
+  dbscan(eps, minPoints) {
+    return this.set.get('scans').dbscan(eps, minPoints);
+  }
+
+  /** The most central scan of each category, label -> scan index. @param {Int32Array} labels @returns {Map<number, number>} */
+  medoids(labels) {
+    const flat = this.set.get('scans').medoids(labels);
+    const out = new Map();
+    for (let k = 0; k < flat.length; k += 2) out.set(flat[k], flat[k + 1]);
+    return out;
+  }
+
+  /** DBSCAN over the set's own epsilon grid x these min points. @param {number[]} minPoints @param {string[] | undefined} truth @returns {SweepPoint[]} */
+  sweep(minPoints, truth) {
+    const set = this.set.get('scans');
+    return set.dbscanSweep(set.epsilonGrid(), Uint32Array.from(minPoints), truth);
+  }
+
+  /** A named model of these labels, as JSON. @param {Int32Array} labels @param {[number, string][]} names @returns {string} */
+  modelJson(labels, names) {
+    return scoped(this.set.get('scans').buildModel(labels, names), (m) => m.toJson());
+  }
+
+  /** Load a model; a malformed one throws and the loaded one stays. @param {string} json @returns {CategorySummary[]} */
+  loadModel(json) {
+    const model = this.wasm.Model.fromJson(json);
+    this.model.set(model);
+    return model.categories();
+  }
+
+  /** The loaded model's category for a descriptor. @param {string} descriptorJson @returns {Classification} */
+  classifyJson(descriptorJson) {
+    return this.model.get('model').classifyJson(descriptorJson);
+  }
+
+  dispose() {
+    this.tree.clear();
+    this.set.clear();
+    this.model.clear();
+  }
+}
+
+/** @param {import('./pkg/placecat.js').Cut} cut @param {number} threshold @returns {CutData} */
+function cutData(cut, threshold) {
+  return { labels: Int32Array.from(cut.labels), nodes: cut.nodes, threshold };
+}
+
+/** The describing side (each worker): reads and describes one scan at a time. */
+export class Describer {
+  /** @param {Wasm} wasm */
+  constructor(wasm) {
+    this.wasm = wasm;
+    /** @type {Slot<import('./pkg/placecat.js').Simulator>} */
+    this.simulator = new Slot();
+    this.simKey = '';
+    /** @type {Slot<import('./pkg/placecat.js').Model>} */
+    this.model = new Slot();
+    this.modelJson = '';
+  }
+
+  /**
+   * @param {Uint8Array} bytes @param {string} name @param {Params} params
+   * @param {number} [previewPoints] @returns {ScanResult}
+   */
+  describe(bytes, name, params, previewPoints = 3000) {
+    return scoped(this.wasm.describeScan(bytes, name, params, undefined, previewPoints), (scan) => ({
+      name: scan.name,
+      format: scan.format,
+      descriptorJson: scan.descriptorJson(),
+      summary: scan.summary(),
+      preview: scan.preview(),
+    }));
+  }
+
+  /**
+   * Scan `index` of a simulated data set, described, with its label and pose.
+   * @param {{scene: 'indoor' | 'warehouse' | 'outdoor', seed: number, scans: number, index: number}} sim
+   * @param {Params} params @param {number} [previewPoints] @returns {ScanResult}
+   */
+  simulate({ scene, seed, scans, index }, params, previewPoints = 3000) {
+    const key = `${scene}/${seed}/${scans}`;
+    if (key !== this.simKey || !this.simulator.value) {
+      this.simulator.set(new this.wasm.Simulator(scene, seed, scans));
+      this.simKey = key;
+    }
+    const s = this.simulator.get('simulator').scan(index);
+    return { ...this.describe(s.bytes, s.name, params, previewPoints), label: s.label, pose: s.pose };
+  }
+
+  /**
+   * Describe a scan with a model's parameters and classify it.
+   * @param {Uint8Array} bytes @param {string} name @param {string} modelJson
+   * @returns {Classification}
+   */
+  classify(bytes, name, modelJson) {
+    if (modelJson !== this.modelJson || !this.model.value) {
+      this.model.set(this.wasm.Model.fromJson(modelJson));
+      this.modelJson = modelJson;
+    }
+    const model = this.model.get('model');
+    return scoped(this.wasm.describeScan(bytes, name, model.params(), undefined, 0), (scan) => model.classify(scan));
+  }
+
+  dispose() {
+    this.simulator.clear();
+    this.model.clear();
+  }
+}

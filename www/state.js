@@ -1,0 +1,296 @@
+// The page's whole state in one shape, and pure transitions: each takes a
+// state and returns a new one (the old is never changed), with no DOM and
+// no wasm. What the views show is derived here too.
+import { fileRows, formatCsv } from './csv.js';
+import { baseName } from './files.js';
+
+/** @typedef {import('./engine.js').ScanResult} ScanResult */
+/** @typedef {import('./engine.js').Params} Params */
+/** @typedef {import('./engine.js').Poses} Poses */
+/** @typedef {import('./engine.js').Pose} Pose */
+/** @typedef {import('./engine.js').TreeData} TreeData */
+/** @typedef {import('./engine.js').CutData} CutData */
+
+/** A scan to describe: a file, or a scan of the simulated demo.
+ * @typedef {{name: string, file?: File, sim?: {scene: 'indoor' | 'outdoor', seed: number, scans: number, index: number}}} Input */
+/** A category: its label, member scans (indices) and most central member.
+ * @typedef {{label: number, members: number[], medoid: number}} Category */
+/** How to cluster (the form's values).
+ * @typedef {{method: 'hkmeans' | 'kmeans' | 'dbscan', hkSeed: number, k: number,
+ *   seeding: import('./engine.js').Seeding, kmSeed: number, eps: number, minPoints: number}} Method */
+
+/**
+ * @typedef {object} State
+ * @property {string} datasetId names are kept per data set (file names, or the demo's settings)
+ * @property {'indoor' | 'outdoor' | null} demo
+ * @property {Input[]} inputs every scan asked for, in order
+ * @property {ScanResult[]} scans the described ones, in order (base names)
+ * @property {{name: string, message: string}[]} errors
+ * @property {Poses | null} poses
+ * @property {Map<string, string> | null} truth ground truth, scan name -> label
+ * @property {Params | null} params
+ * @property {number} run the current run (a newer one supersedes it)
+ * @property {boolean} running
+ * @property {{size: number, usesMatrix: boolean, matrixLimit: number} | null} set
+ * @property {TreeData | null} tree
+ * @property {CutData | null} cut
+ * @property {'threshold' | 'categories' | undefined} cutBy what the user set last
+ * @property {{threshold: number, count: number} | null} lastCut the last cut of a tree, kept
+ *   while another method is shown so that coming back cuts as before
+ * @property {Int32Array | null} labels each scan's category (-1: noise)
+ * @property {Category[]} categories by label
+ * @property {Record<string, string>} anchors category names, by the scan that carries them
+ * @property {string} modelJson the loaded model, '' for none
+ */
+
+/** @returns {State} */
+export function initialState() {
+  return {
+    datasetId: '', demo: null, inputs: [], scans: [], errors: [], poses: null, truth: null, params: null,
+    run: 0, running: false, set: null, tree: null, cut: null, cutBy: undefined, lastCut: null, labels: null, categories: [],
+    anchors: {}, modelJson: '',
+  };
+}
+
+/** No results: what a new run or a new set starts from. */
+const NO_RESULTS = { scans: [], errors: [], set: null, tree: null, cut: null, labels: null, categories: [] };
+
+/** The inputs of the demo: 8 rooms x 5 indoor scans, or a 90-scan drive. @param {'indoor' | 'outdoor'} scene */
+export function demoInputs(scene, seed = 1) {
+  const scans = scene === 'indoor' ? 8 : 90;
+  const total = scene === 'indoor' ? scans * 5 : scans;
+  const inputs = Array.from({ length: total }, (_, index) => ({ name: `scan_${String(index).padStart(5, '0')}.ply`, sim: { scene, seed, scans, index } }));
+  return { datasetId: `demo-${scene}-${seed}-${scans}`, inputs };
+}
+
+/** The worker task that describes an input. @param {Input} input @param {Params} params */
+export function taskOf(input, params) {
+  return input.sim ? { type: 'simulate', ...input.sim, params } : { type: 'describe', file: input.file, name: input.name, params };
+}
+
+/**
+ * A new run over `inputs`: results cleared, names of this data set loaded.
+ * @param {State} s @param {{datasetId: string, demo: State['demo'], inputs: Input[], anchors: Record<string, string>, params: Params}} run
+ * @returns {State}
+ */
+export function beginRun(s, { datasetId, demo, inputs, anchors, params }) {
+  const demoReset = demo ? { poses: null, truth: null } : {};
+  return { ...s, ...NO_RESULTS, ...demoReset, datasetId, demo, inputs, anchors, params, run: s.run + 1, running: true };
+}
+
+/** @param {State} s @returns {State} */
+export function withoutResults(s) {
+  return { ...s, ...NO_RESULTS };
+}
+
+/** @param {State} s @param {string} name @param {string} message @returns {State} */
+export function withError(s, name, message) {
+  return { ...s, errors: [...s.errors, { name, message }] };
+}
+
+/** The error as shown: prefixed by the file unless it names it. @param {{name: string, message: string}} e */
+export const errorText = (e) => (e.message.startsWith(e.name) ? e.message : `${e.name}: ${e.message}`);
+
+/**
+ * The run ended (done or cancelled) with these results (holes: failed or cancelled).
+ * @param {State} s @param {(ScanResult | undefined)[]} results @returns {State}
+ */
+export function finishRun(s, results) {
+  const scans = results.filter((r) => r !== undefined).map((r) => ({ ...r, name: baseName(r.name) }));
+  return { ...s, running: false, scans, truth: truthOfScans(scans) ?? s.truth };
+}
+
+/**
+ * The last session's scans, restored.
+ * @param {State} s @param {{datasetId: string, params: Params, demo?: State['demo'], scans: ScanResult[]}} last
+ * @param {Record<string, string>} anchors @returns {State}
+ */
+export function restoreSession(s, last, anchors) {
+  const scans = last.scans.map((r) => ({ ...r }));
+  return { ...s, ...NO_RESULTS, datasetId: last.datasetId, anchors, params: last.params, demo: last.demo ?? null, inputs: [], scans, truth: truthOfScans(scans) ?? s.truth };
+}
+
+/** Simulated scans carry their true kind: ground truth for the demo. @param {ScanResult[]} scans */
+function truthOfScans(scans) {
+  return scans.some((r) => r.label) ? new Map(scans.map((r) => [r.name, r.label ?? ''])) : null;
+}
+
+/** Ground truth from labels.csv text (throws on a malformed file). @param {State} s @param {string} text @returns {State} */
+export function withTruthCsv(s, text) {
+  return { ...s, truth: new Map(fileRows(text).filter(([, l]) => l !== '').map(([f, l]) => [baseName(f), l])) };
+}
+
+/** @param {State} s @param {Poses | null} poses @returns {State} */
+export function withPoses(s, poses) {
+  return { ...s, poses };
+}
+
+/** A new descriptor set: no clustering yet. @param {State} s @param {State['set']} set @returns {State} */
+export function withSet(s, set) {
+  return { ...s, set, tree: null, cut: null, labels: null, categories: [], cutBy: undefined, lastCut: null };
+}
+
+/** A new tree (hierarchical k-means), not yet cut. @param {State} s @param {TreeData} tree @returns {State} */
+export function withTree(s, tree) {
+  return { ...s, tree, cut: null, labels: null, categories: [] };
+}
+
+/**
+ * Labels and their categories: from a cut of the tree, or (cut null) from
+ * k-means or DBSCAN. `medoids` maps each label to its most central scan.
+ * @param {State} s @param {Int32Array} labels @param {Map<number, number>} medoids
+ * @param {CutData | null} cut @returns {State}
+ */
+export function withLabels(s, labels, medoids, cut = null) {
+  const members = new Map([...medoids.keys()].map((l) => [l, /** @type {number[]} */ ([])]));
+  labels.forEach((l, i) => l >= 0 && members.get(l)?.push(i));
+  const categories = [...medoids.keys()].sort((a, b) => a - b).map((label) => ({ label, members: members.get(label) ?? [], medoid: /** @type {number} */ (medoids.get(label)) }));
+  const lastCut = cut ? { threshold: cut.threshold, count: cut.nodes.length } : s.lastCut;
+  return { ...s, labels, categories, cut, lastCut, tree: cut ? s.tree : null };
+}
+
+/**
+ * How to cut a new tree: into as many categories as the user asked for,
+ * at the threshold of the last cut, or (the first time) into 5.
+ * @param {State} s @returns {{k: number} | {threshold: number}}
+ */
+export function nextCut(s) {
+  if (!s.lastCut) return { k: clampCategories(s, 5) };
+  if (s.cutBy === 'categories') return { k: clampCategories(s, s.lastCut.count) };
+  return { threshold: s.lastCut.threshold };
+}
+
+/** @param {State} s @param {State['cutBy']} cutBy @returns {State} */
+export function withCutBy(s, cutBy) {
+  return { ...s, cutBy };
+}
+
+/** How many categories to cut into: what the user asked for, within 1..scans. @param {State} s @param {number} k */
+export function clampCategories(s, k) {
+  return Math.max(1, Math.min(Math.round(k) || 1, s.scans.length));
+}
+
+// ---- names ------------------------------------------------------------------
+
+/** A category's name: the one anchored to its medoid, else to any member, else ''. @param {State} s @param {Category} cat */
+export function nameOf(s, cat) {
+  const at = s.anchors[s.scans[cat.medoid].name];
+  if (at) return at;
+  for (const m of cat.members) if (s.anchors[s.scans[m].name]) return s.anchors[s.scans[m].name];
+  return '';
+}
+
+/** The name shown for category i (its own, or `category i+1`). @param {State} s @param {number} i */
+export function displayName(s, i) {
+  return nameOf(s, s.categories[i]) || `category ${i + 1}`;
+}
+
+/** Name category i: one anchor per category, on its medoid ('' clears). @param {State} s @param {number} i @param {string} name @returns {State} */
+export function withName(s, i, name) {
+  const cat = s.categories[i];
+  const anchors = { ...s.anchors };
+  for (const m of cat.members) delete anchors[s.scans[m].name];
+  if (name.trim()) anchors[s.scans[cat.medoid].name] = name.trim();
+  return { ...s, anchors };
+}
+
+/** Anchors set for some categories (index -> name), e.g. from a model. @param {State} s @param {Map<number, string>} names @returns {State} */
+export function withNames(s, names) {
+  const anchors = { ...s.anchors };
+  for (const [i, name] of names) anchors[s.scans[s.categories[i].medoid].name] = name;
+  return { ...s, anchors };
+}
+
+/** For each category, the first category with the same name (its colour slot). @param {State} s */
+export function colourSlots(s) {
+  /** @type {Map<string, number>} */
+  const first = new Map();
+  return s.categories.map((c, i) => {
+    const name = nameOf(s, c);
+    if (!name) return i;
+    if (!first.has(name)) first.set(name, i);
+    return /** @type {number} */ (first.get(name));
+  });
+}
+
+/** Each scan's category index (position in `categories`), -1 for noise. @param {State} s */
+export function categoryIndex(s) {
+  const index = new Map(s.categories.map((c, i) => [c.label, i]));
+  return Int32Array.from(s.labels ?? [], (l) => (l >= 0 ? index.get(l) ?? -1 : -1));
+}
+
+/** The categories export: `file,category` rows, noise as `noise`. @param {State} s */
+export function categoriesCsv(s) {
+  const ci = categoryIndex(s);
+  return formatCsv([['file', 'category'], ...s.scans.map((r, i) => [r.name, ci[i] >= 0 ? displayName(s, ci[i]) : 'noise'])]);
+}
+
+/** [label, name] of every category, for a model. @param {State} s @returns {[number, string][]} */
+export function modelNames(s) {
+  return s.categories.map((c, i) => [c.label, displayName(s, i)]);
+}
+
+/** Names from a categories CSV: each category takes its members' most common name (throws on a malformed file). @param {State} s @param {string} text @returns {State} */
+export function withNamesCsv(s, text) {
+  const table = new Map(fileRows(text).map(([f, n]) => [baseName(f), n]));
+  if (table.size === 0) throw new Error('no rows');
+  /** @type {Map<number, string>} */
+  const names = new Map();
+  s.categories.forEach((c, i) => {
+    /** @type {Map<string, number>} */
+    const votes = new Map();
+    for (const m of c.members) {
+      const n = table.get(s.scans[m].name);
+      if (n) votes.set(n, (votes.get(n) ?? 0) + 1);
+    }
+    const best = [...votes].sort((a, b) => b[1] - a[1])[0];
+    if (best) names.set(i, best[0]);
+  });
+  return withNames(s, names);
+}
+
+/** @param {State} s @param {string} modelJson @returns {State} */
+export function withModel(s, modelJson) {
+  return { ...s, modelJson };
+}
+
+/** Categories with no name yet, for a model to name: [index, its medoid's descriptor JSON]. @param {State} s @returns {[number, string][]} */
+export function unnamed(s) {
+  return s.categories.flatMap((c, i) => (nameOf(s, c) ? [] : [[i, s.scans[c.medoid].descriptorJson]]));
+}
+
+// ---- derived views ----------------------------------------------------------
+
+/** Ground truth per scan, or undefined when some scan has none. @param {State} s */
+export function truthLabels(s) {
+  if (!s.truth) return undefined;
+  const truth = s.truth;
+  const out = s.scans.map((r) => truth.get(r.name));
+  return out.every((t) => t !== undefined) ? /** @type {string[]} */ (out) : undefined;
+}
+
+/**
+ * Each scan's pose, and whether there is a map to draw (every scan has
+ * one). The indoor demo's rooms are separate places: a strip, no map.
+ * @param {State} s @returns {{poses: (Pose | undefined)[], usePoses: boolean, note: string}}
+ */
+export function posesOf(s) {
+  if (s.demo) return { poses: s.scans.map((r) => r.pose), usePoses: s.demo === 'outdoor', note: '' };
+  const p = s.poses;
+  if (!p) return { poses: s.scans.map(() => undefined), usePoses: false, note: '' };
+  const byName = new Map(p.poses.filter((q) => q.name).map((q) => [baseName(q.name ?? ''), q]));
+  const poses = s.scans.map((r) => (p.format === 'csv' ? byName.get(r.name) : p.poses[s.inputs.findIndex((x) => x.name === r.name)]));
+  const note = p.format !== 'csv' && p.poses.length !== s.inputs.length ? `poses: ${p.poses.length} poses for ${s.inputs.length} scans, matched in name order` : '';
+  return { poses, usePoses: poses.every(Boolean), note };
+}
+
+/** The dendrogram's data: per cut node, its category index and central preview. @param {State} s */
+export function dendrogramOf(s) {
+  if (!s.tree || !s.cut || !s.labels) return null;
+  const { nodes, rootHeight } = s.tree;
+  const labels = s.labels;
+  const index = new Map(s.categories.map((c, i) => [c.label, i]));
+  const catIndex = s.cut.nodes.map((node) => /** @type {number} */ (index.get(labels[nodes[node].members[0]])));
+  const central = catIndex.map((i) => s.scans[s.categories[i].medoid].preview);
+  return { nodes, rootHeight, threshold: s.cut.threshold, cutNodes: s.cut.nodes, central, catIndex };
+}
