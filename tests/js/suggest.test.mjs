@@ -1,0 +1,50 @@
+// The defaults the page suggests from the data: the preset from far
+// points, the dendrogram's axis, the map's site subsample.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { rangeShare, suggestPreset, suggestionText, siteSubsample } from '../../www/suggest.js';
+import { axis, defaultScale, logFloor, heightLabel } from '../../www/scale.js';
+
+test('the share of points beyond 10 m is horizontal, skips non-finite points, and picks the preset at a third', () => {
+  // (3, 4, 50): 5 m away horizontally however high; (8, 8, 0): 11.3 m.
+  const xyz = Float32Array.from([3, 4, 50, 8, 8, 0, NaN, 0, 0, 0, 12, -1]);
+  assert.deepEqual(rangeShare(xyz), { far: 2 / 3, points: 3 });
+  assert.deepEqual(rangeShare(new Float32Array(0)), { far: 0, points: 0 });
+  assert.equal(suggestPreset(0.34), 'outdoor');
+  assert.equal(suggestPreset(0.33), 'indoor');
+  assert.equal(suggestionText({ preset: 'outdoor', far: 0.736, from: 'a.bin' }), 'outdoor suggested: 74 % of the points of a.bin lie beyond 10 m (a third or more: open space)');
+});
+
+test('the site subsample keeps at most 400 x, y pairs, evenly strided', () => {
+  const xyz = Float32Array.from({ length: 3000 * 3 }, (_, i) => i);
+  const site = siteSubsample(xyz);
+  assert.equal(site.length, 2 * 375); // stride 8 over 3000 points
+  assert.deepEqual([...site.slice(0, 4)], [0, 1, 24, 25]);
+  assert.equal(siteSubsample(Float32Array.from([1, 2, 3])).length, 2);
+});
+
+test('each axis maps 0 to the bottom, the top to 1, and back (dragging works in every scale)', () => {
+  for (const scale of /** @type {const} */ (['linear', 'sqrt', 'log'])) {
+    const a = axis(scale, 16, 0.01);
+    assert.equal(a.at(0), 0, scale);
+    assert.ok(Math.abs(a.at(16) - 1) < 1e-12, scale);
+    for (const h of [0.01, 0.05, 0.3, 2, 15]) assert.ok(Math.abs(a.height(a.at(h)) - h) < 1e-9 * 16, `${scale} ${h}`);
+  }
+  // On the log axis the lowest merges are well above the leaves: a merge at
+  // 0.05 under a root at 16 sits 0.3 % up a linear axis, 6 % up a square
+  // root one, 24 % up the log one (lowest merge 0.01).
+  assert.ok(axis('linear', 16, 0.01).at(0.05) < 0.004);
+  assert.ok(axis('sqrt', 16, 0.01).at(0.05) > 0.05);
+  assert.ok(axis('log', 16, 0.01).at(0.05) > 0.24);
+});
+
+test('the default scale follows the root / median merge ratio; the log floor is the lowest merge', () => {
+  const tree = (heights) => heights.map((height) => ({ height, children: [1] }));
+  assert.deepEqual(defaultScale(tree([1, 0.5, 0.3]), 1), { scale: 'linear', ratio: 2 });
+  assert.equal(defaultScale(tree([16, 0.5, 0.3]), 16).scale, 'sqrt');
+  assert.equal(defaultScale(tree([16, 0.05, 0.01]), 16).scale, 'log');
+  assert.equal(logFloor(tree([16, 0.05, 0.01, 0]), 16.8), 0.01);
+  assert.equal(heightLabel(0), '0');
+  assert.equal(heightLabel(16.08), '16.1');
+  assert.equal(heightLabel(0.01234), '0.0123');
+});
