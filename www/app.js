@@ -26,7 +26,7 @@ const view = new View({
     view.recolour(state);
   },
   onSweepPick: () => cluster(),
-  onScale: (scale) => render((state = S.withScale(state, scale))),
+  onScale: (scale) => { state = S.withScale(state, scale); render(); },
 });
 
 const preset = () => /** @type {import('./engine.js').Preset} */ ($('preset').value);

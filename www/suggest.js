@@ -28,11 +28,14 @@ export function rangeShare(xyz) {
  * first 5 m (ground and the vehicle) and reaches 20 m. A scan whose points
  * mostly lie within 10 m is a room or a hall: the outdoor preset would drop
  * its nearest structure and leave its far ranges empty. A scan with a third
- * or more of its points beyond 10 m is open space: outdoor. Why a third and
- * not a half: a vehicle's lidar puts most of its returns on the ground close
- * by (the rings of a Velodyne on KITTI: 43 % beyond 10 m), while rooms and
- * halls put almost none beyond 10 m (pcl_room 0 %, an enclosed space with
- * walls ~12 m away 2 %).
+ * or more of its points beyond 10 m is open space: outdoor. Why a third
+ * and not a half: a vehicle's lidar puts most of its returns on the ground
+ * close by. Measured on the real scans in tests (share beyond 10 m):
+ * KITTI 00 (a road) 36-45 %; an Ouster OS0 in an enclosed space with walls
+ * ~12 m away 26-28 %; velodyne_pair 9 % (outdoors, but half its points lie
+ * within 3.5 m: the outdoor preset, blind below 5 m, would describe it by a
+ * third of its points); pcl_room (a room) under 1 %. A third lies in the
+ * gap between 28 and 36 %.
  * @param {number} farShare @returns {'indoor' | 'outdoor'}
  */
 export function suggestPreset(farShare) {
