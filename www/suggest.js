@@ -2,8 +2,10 @@
 // the descriptor preset from how far the points of a scan lie, and the
 // site subsample the trajectory map keeps of each scan.
 
-/** Beyond this horizontal range (m) a point counts as far. */
-export const FAR = 10;
+/** Beyond this horizontal range (m) a point counts as far: where the indoor preset's resolved ranges end. */
+export const FAR = 15;
+/** From this share of far points on, outdoor is suggested. */
+export const OUTDOOR_SHARE = 0.14;
 
 /**
  * The share of points beyond FAR metres of the sensor, horizontally (x, y
@@ -23,29 +25,30 @@ export function rangeShare(xyz) {
 
 /**
  * The preset for a scan with this share of far points. What the presets
- * mean: `indoor` (paper Tab. II) counts structure from 1 m on, in 3-4 m
- * intervals up to 15 m and one open interval beyond; `outdoor` ignores the
- * first 5 m (ground and the vehicle) and reaches 20 m. A scan whose points
- * mostly lie within 10 m is a room or a hall: the outdoor preset would drop
- * its nearest structure and leave its far ranges empty. A scan with a third
- * or more of its points beyond 10 m is open space: outdoor. Why a third
- * and not a half: a vehicle's lidar puts most of its returns on the ground
- * close by. Measured on the real scans in tests (share beyond 10 m):
- * KITTI 00 (a road) 36-45 %; an Ouster OS0 in an enclosed space with walls
- * ~12 m away 26-28 %; velodyne_pair 9 % (outdoors, but half its points lie
- * within 3.5 m: the outdoor preset, blind below 5 m, would describe it by a
- * third of its points); pcl_room (a room) under 1 %. A third lies in the
- * gap between 28 and 36 %.
+ * mean (paper Tab. II): `indoor` resolves structure from 1 to 15 m in 3-4 m
+ * intervals and puts everything beyond 14 m into one open interval;
+ * `outdoor` ignores the first 5 m (ground, the vehicle) and resolves up to
+ * 20 m. When a good part of a scan lies beyond 15 m, indoor would lump it
+ * together and outdoor resolves it: outdoor from 14 % of the points on.
+ * Why 15 m and 14 %: the share beyond 15 m separates the scans in tests
+ * with a gap; beyond 10 m it does not. Measured (beyond 15 m / beyond 10 m):
+ * KITTI 00, a road: 17-26 % / 36-45 %; the outdoor demo (the old strip,
+ * every 9th scan): 18-27 % / 29-43 %; an Ouster OS0 in an enclosed space
+ * with walls ~12 m away: 9-11 % / 26-28 %; velodyne_pair (outdoors, but
+ * half its points within 3.5 m, where the outdoor preset is blind): 4 % /
+ * 9 %; pcl_room and the indoor demo's rooms: under 1 %. 14 % lies in the
+ * gap 11-17 % (near its geometric middle).
  * @param {number} farShare @returns {'indoor' | 'outdoor'}
  */
 export function suggestPreset(farShare) {
-  return farShare >= 1 / 3 ? 'outdoor' : 'indoor';
+  return farShare >= OUTDOOR_SHARE ? 'outdoor' : 'indoor';
 }
 
 /** What the page says about a suggestion. @param {{preset: string, far: number, from: string}} s */
 export function suggestionText(s) {
   const pct = Math.round(100 * s.far);
-  return `${s.preset} suggested: ${pct} % of the points of ${s.from} lie beyond ${FAR} m (${s.preset === 'outdoor' ? 'a third or more: open space' : 'under a third: a room or hall'})`;
+  const limit = Math.round(100 * OUTDOOR_SHARE);
+  return `${s.preset} suggested: ${pct} % of the points of ${s.from} lie beyond ${FAR} m (${s.preset === 'outdoor' ? `${limit} % or more: open space` : `under ${limit} %: a room or hall`})`;
 }
 
 /** Points of a scan the map keeps (x, y pairs, sensor frame). */

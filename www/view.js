@@ -62,7 +62,8 @@ export class View {
     const d = dendrogramOf(s);
     this.catIndex = d?.catIndex ?? null;
     $('scale').value = d?.scale ?? 'linear';
-    $('scale-note').textContent = d && !s.scale ? `(${d.auto.scale === 'linear' ? 'linear' : d.auto.scale === 'sqrt' ? 'square root' : 'log'}: the root is ${d.auto.ratio.toFixed(0)} × the median merge height)` : '';
+    const named = { linear: 'linear', sqrt: 'square root', log: 'log' };
+    $('scale-note').textContent = d ? `default ${named[d.auto.scale]}: the root is ${d.auto.ratio.toFixed(0)} × the median merge height` : '';
     $('cut-note').textContent = this.#cutNote(s);
     if (d) this.dendrogram.set(d);
     else {

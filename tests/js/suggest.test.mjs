@@ -5,14 +5,15 @@ import assert from 'node:assert/strict';
 import { rangeShare, suggestPreset, suggestionText, siteSubsample } from '../../www/suggest.js';
 import { axis, defaultScale, logFloor, heightLabel } from '../../www/scale.js';
 
-test('the share of points beyond 10 m is horizontal, skips non-finite points, and picks the preset at a third', () => {
-  // (3, 4, 50): 5 m away horizontally however high; (8, 8, 0): 11.3 m.
-  const xyz = Float32Array.from([3, 4, 50, 8, 8, 0, NaN, 0, 0, 0, 12, -1]);
+test('the share of points beyond 15 m is horizontal, skips non-finite points, and picks the preset at 14 %', () => {
+  // (9, 12, 50): 15 m away horizontally however high, not beyond; (11, 11, 0): 15.6 m.
+  const xyz = Float32Array.from([9, 12, 50, 11, 11, 0, NaN, 0, 0, 0, 16, -1]);
   assert.deepEqual(rangeShare(xyz), { far: 2 / 3, points: 3 });
   assert.deepEqual(rangeShare(new Float32Array(0)), { far: 0, points: 0 });
-  assert.equal(suggestPreset(0.34), 'outdoor');
-  assert.equal(suggestPreset(0.33), 'indoor');
-  assert.equal(suggestionText({ preset: 'outdoor', far: 0.736, from: 'a.bin' }), 'outdoor suggested: 74 % of the points of a.bin lie beyond 10 m (a third or more: open space)');
+  assert.equal(suggestPreset(0.14), 'outdoor');
+  assert.equal(suggestPreset(0.139), 'indoor');
+  assert.equal(suggestionText({ preset: 'outdoor', far: 0.256, from: 'a.bin' }), 'outdoor suggested: 26 % of the points of a.bin lie beyond 15 m (14 % or more: open space)');
+  assert.equal(suggestionText({ preset: 'indoor', far: 0.003, from: 'b.pcd' }), 'indoor suggested: 0 % of the points of b.pcd lie beyond 15 m (under 14 %: a room or hall)');
 });
 
 test('the site subsample keeps at most 400 x, y pairs, evenly strided', () => {
