@@ -4,7 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { start, inkedPixels, afterRun, ARTIFACTS, REAL } from './harness.mjs';
+import { start, inkedPixels, afterRun, ARTIFACTS, REAL, ROOT } from './harness.mjs';
 
 let h;
 before(async () => { h = await start(); });
@@ -32,6 +32,9 @@ test('the outdoor demo: outdoor suggested, a site under the trajectory, a readab
   assert.match(await text('#map-caption'), /^Trajectory map/);
   assert.match(await text('#cut-note'), /^\d+ categor(y|ies): /);
   await h.page.screenshot({ path: join(ARTIFACTS, 'demo-outdoor.png') });
+  // The README's picture of the page: PLACECAT_README_SHOT=1 refreshes it
+  // (e.g. after the demo scene changes); the test never writes docs/ otherwise.
+  if (process.env.PLACECAT_README_SHOT === '1') await h.page.screenshot({ path: join(ROOT, 'docs', 'page-outdoor-demo.jpg'), type: 'jpeg', quality: 80 });
   // Each scale draws another axis; dragging the line still cuts in each.
   const ticks = () => h.page.$eval('#dendrogram', (c) => c.dataset.ticks);
   const seen = new Set();
