@@ -16,7 +16,7 @@
 /** @typedef {import('./pkg/placecat.js').CategorySummary} CategorySummary */
 /** @typedef {import('./pkg/placecat.js').Preset} Preset */
 /** @typedef {import('./pkg/placecat.js').Seeding} Seeding */
-import { rangeShare, siteSubsample, suggestPreset } from './suggest.js';
+import { choiceReason, rangeShare, siteSubsample, suggestPreset } from './suggest.js';
 
 /**
  * One described scan as plain data (what a worker sends back). `site`: a
@@ -152,8 +152,18 @@ export class Engine {
    */
   suggestCategories() {
     const n = this.set.get('scans').length;
-    const rule = null; // <- the wasm rule's {k, why}, e.g. from this.tree.get('tree')
-    return rule ?? { k: Math.min(5, n), why: n <= 5 ? `one per scan (${n} scans)` : 'the default of 5 (no rule in this build yet)' };
+    const choice = this.#ruleChoice();
+    if (choice) return { k: choice.k, why: choiceReason(choice) };
+    return { k: Math.min(5, n), why: n <= 5 ? `one per scan (${n} scans)` : 'the default of 5 (no rule in this build yet)' };
+  }
+
+  /**
+   * The rule's choice for the kept tree (the core's choose_k Choice: k, rule,
+   * scores, one_category), once the wasm API has it; null until then.
+   * @returns {{k: number, rule: string} | null}
+   */
+  #ruleChoice() {
+    return null; // <- the one line to wire, e.g. this.tree.get('tree').chooseK(this.set.get('scans'))
   }
 
   /** Delta between two scans of the set. @param {number} i @param {number} j @returns {number} */

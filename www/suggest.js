@@ -71,3 +71,13 @@ export function siteSubsample(xyz, max = SITE_POINTS) {
   }
   return out.subarray(0, j);
 }
+
+/**
+ * Why the first cut has k categories, from the rule that chose k (the
+ * core's `choose_k` Choice): its best score, or no structure for one.
+ * @param {{k: number, rule: string}} choice
+ */
+export function choiceReason({ k, rule }) {
+  const name = rule.replaceAll('_', ' ');
+  return k === 1 ? `the ${name} rule finds no structure to split` : `the ${name} rule's best score`;
+}

@@ -2,7 +2,7 @@
 // points, the dendrogram's axis, the map's site subsample.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { rangeShare, suggestPreset, suggestionText, siteSubsample } from '../../www/suggest.js';
+import { rangeShare, suggestPreset, suggestionText, siteSubsample, choiceReason } from '../../www/suggest.js';
 import { axis, defaultScale, logFloor, heightLabel } from '../../www/scale.js';
 
 test('the share of points beyond 15 m is horizontal, skips non-finite points, and picks the preset at 14 %', () => {
@@ -48,4 +48,9 @@ test('the default scale follows the root / median merge ratio; the log floor is 
   assert.equal(heightLabel(0), '0');
   assert.equal(heightLabel(16.08), '16.1');
   assert.equal(heightLabel(0.01234), '0.0123');
+});
+
+test('the first cut says why: the rule\'s best score, or no structure for one category', () => {
+  assert.equal(choiceReason({ k: 4, rule: 'silhouette_gap' }), "the silhouette gap rule's best score");
+  assert.equal(choiceReason({ k: 1, rule: 'gap' }), 'the gap rule finds no structure to split');
 });
