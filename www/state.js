@@ -29,6 +29,7 @@ import { siteSubsample } from './suggest.js';
  * @property {ScanResult[]} scans the described ones, in order (base names)
  * @property {{name: string, message: string}[]} errors
  * @property {Poses | null} poses
+ * @property {string | null} posesFor the data set the poses belong to; null: loaded before any scans, for the next
  * @property {Map<string, string> | null} truth ground truth, scan name -> label
  * @property {Params | null} params
  * @property {number} run the current run (a newer one supersedes it)
@@ -53,7 +54,7 @@ import { siteSubsample } from './suggest.js';
 /** @returns {State} */
 export function initialState() {
   return {
-    datasetId: '', demo: null, inputs: [], scans: [], errors: [], poses: null, truth: null, params: null,
+    datasetId: '', demo: null, inputs: [], scans: [], errors: [], poses: null, posesFor: null, truth: null, params: null,
     run: 0, running: false, set: null, tree: null, cut: null, cutBy: undefined, lastCut: null, labels: null, categories: [],
     anchors: {}, modelJson: '', suggestion: null, scale: null, firstCut: null,
   };
@@ -79,14 +80,16 @@ export function taskOf(input, params) {
  * A new run over `inputs`: results cleared, names of this data set loaded.
  * A new data set forgets the last one's poses (they would be drawn as this
  * one's trajectory, issue 16) unless a poses file came with it
- * (`withPosesFile`), and its preset suggestion.
+ * (`withPosesFile`) or they were loaded while no scans were shown (for the
+ * scans to come); and it forgets the last one's preset suggestion.
  * @param {State} s @param {{datasetId: string, demo: State['demo'], inputs: Input[], anchors: Record<string, string>, params: Params,
  *   withPosesFile?: boolean}} run
  * @returns {State}
  */
 export function beginRun(s, { datasetId, demo, inputs, anchors, params, withPosesFile = false }) {
   const demoReset = demo ? { poses: null, truth: null } : {};
-  const newSet = datasetId !== s.datasetId ? { poses: withPosesFile ? s.poses : null, suggestion: null } : {};
+  const keep = withPosesFile || s.posesFor === null;
+  const newSet = datasetId !== s.datasetId ? { poses: keep ? s.poses : null, posesFor: datasetId, suggestion: null } : {};
   return { ...s, ...NO_RESULTS, ...newSet, ...demoReset, datasetId, demo, inputs, anchors, params, run: s.run + 1, running: true };
 }
 
@@ -148,9 +151,9 @@ export function withTruthCsv(s, text) {
   return { ...s, truth: new Map(fileRows(text).filter(([, l]) => l !== '').map(([f, l]) => [baseName(f), l])) };
 }
 
-/** @param {State} s @param {Poses | null} poses @returns {State} */
+/** Poses for the scans shown, or (none shown) for the next data set. @param {State} s @param {Poses | null} poses @returns {State} */
 export function withPoses(s, poses) {
-  return { ...s, poses };
+  return { ...s, poses, posesFor: s.scans.length ? s.datasetId : null };
 }
 
 /** A new descriptor set: no clustering yet. @param {State} s @param {State['set']} set @returns {State} */

@@ -53,21 +53,24 @@ export function suggestionText(s) {
 
 /** Points of a scan the map keeps (x, y pairs, sensor frame). */
 export const SITE_POINTS = 400;
+/** ... within this horizontal range (m): the place around the scan, not the sparse far rings that blur the map. */
+export const SITE_RANGE = 30;
 
 /**
  * A top-down subsample of interleaved x, y, z points: at most `max`
- * (x, y) pairs, evenly strided, so the map holds a few kilobytes per scan
- * whatever the scans' size.
+ * (x, y) pairs within SITE_RANGE, evenly strided, so the map holds a few
+ * kilobytes per scan whatever the scans' size.
  * @param {Float32Array} xyz @param {number} [max] @returns {Float32Array}
  */
 export function siteSubsample(xyz, max = SITE_POINTS) {
-  const n = Math.floor(xyz.length / 3);
-  const step = Math.max(1, Math.ceil(n / max));
-  const out = new Float32Array(2 * Math.ceil(n / step));
+  const near = [];
+  for (let i = 0; i + 2 < xyz.length; i += 3) if (Math.hypot(xyz[i], xyz[i + 1]) <= SITE_RANGE) near.push(i);
+  const step = Math.max(1, Math.ceil(near.length / max));
+  const out = new Float32Array(2 * Math.ceil(near.length / step));
   let j = 0;
-  for (let i = 0; i < n; i += step) {
-    out[j++] = xyz[3 * i];
-    out[j++] = xyz[3 * i + 1];
+  for (let k = 0; k < near.length; k += step) {
+    out[j++] = xyz[near[k]];
+    out[j++] = xyz[near[k] + 1];
   }
   return out.subarray(0, j);
 }

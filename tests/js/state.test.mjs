@@ -170,6 +170,9 @@ test('poses of the last data set are dropped by a new one, kept when a poses fil
   assert.equal(run('files-2-other', true).poses, poses);
   assert.equal(run('files-6-x').poses, poses, 'the same set again (a new preset)');
   assert.equal(run('files-6-x').suggestion?.preset, 'outdoor');
+  // Poses picked before any scans are for the scans to come.
+  const early = S.withPoses(S.initialState(), poses);
+  assert.equal(S.beginRun(early, { datasetId: 'files-2-new', demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}) }).poses, poses);
 });
 
 test('CSV poses have no heading: the map draws the trajectory but not the site', () => {

@@ -16,11 +16,13 @@ test('the share of points beyond 15 m is horizontal, skips non-finite points, an
   assert.equal(suggestionText({ preset: 'indoor', far: 0.003, from: 'b.pcd' }), 'indoor suggested: 0 % of the points of b.pcd lie beyond 15 m (under 14 %: a room or hall)');
 });
 
-test('the site subsample keeps at most 400 x, y pairs, evenly strided', () => {
-  const xyz = Float32Array.from({ length: 3000 * 3 }, (_, i) => i);
+test('the site subsample keeps at most 400 x, y pairs within 30 m, evenly strided', () => {
+  // 3000 points at x = i / 100 (0 to 29.99 m), y = 1, and 10 beyond 30 m.
+  const xyz = Float32Array.from({ length: 3010 * 3 }, (_, i) => (i % 3 === 0 ? (i < 9000 ? i / 300 : 40) : i % 3 === 1 ? 1 : 0));
   const site = siteSubsample(xyz);
   assert.equal(site.length, 2 * 375); // stride 8 over 3000 points
-  assert.deepEqual([...site.slice(0, 4)], [0, 1, 24, 25]);
+  assert.deepEqual([...site.slice(0, 4)], [0, 1, 0.07999999821186066, 1]);
+  assert.ok(Math.max(...site.filter((_, i) => i % 2 === 0)) < 30);
   assert.equal(siteSubsample(Float32Array.from([1, 2, 3])).length, 2);
 });
 
