@@ -4,6 +4,8 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { start, inkedPixels, afterRun, ARTIFACTS, REAL, ROOT } from './harness.mjs';
 
 let h;
@@ -12,7 +14,7 @@ after(async () => { await h?.close(); });
 
 const text = (sel) => h.page.textContent(sel);
 const categories = () => h.page.$eval('#cluster-status', (e) => Number(e.dataset.categories));
-const load = (files) => afterRun(h.page, () => h.page.setInputFiles('#files', files.map((f) => join(REAL, f))));
+const load = (files) => afterRun(h.page, () => h.page.setInputFiles('#files', files.map((f) => (f.startsWith('/') ? f : join(REAL, f)))));
 
 /** Pixels of the map in the site's grey (rgb 70, 78, 92 at low alpha): the scans' points, not the path. */
 const sitePixels = () => h.page.evaluate(() => {
@@ -80,6 +82,19 @@ test('an enclosed space is indoor, KITTI outdoor; poses go with their data set',
   assert.match(await text('#preset-note'), /^outdoor suggested/);
   assert.match(await text('#map-caption'), /^Trajectory map/);
   assert.ok((await sitePixels()) > 500, 'KITTI scans drawn by their poses');
+  // The same poses as TUM rows (t x y z qx qy qz qw, a rotation about z by
+  // the KITTI rows' yaw) draw the same map.
+  const mapImage = () => h.page.$eval('#map', (c) => c.toDataURL());
+  const kittiMap = await mapImage();
+  const tum = readFileSync(join(REAL, 'kitti00/poses.txt'), 'utf8').trim().split('\n').map((line, i) => {
+    const v = line.trim().split(/\s+/).map(Number);
+    const yaw = Math.atan2(v[4], v[0]);
+    return [i, v[3], v[7], v[11], 0, 0, Math.sin(yaw / 2), Math.cos(yaw / 2)].join(' ');
+  });
+  const tumFile = join(mkdtempSync(join(tmpdir(), 'placecat-e2e-')), 'poses_tum.txt');
+  writeFileSync(tumFile, tum.join('\n') + '\n');
+  await load(kitti.slice(0, 4).concat([tumFile]));
+  assert.equal(await mapImage(), kittiMap, 'TUM poses draw the map KITTI poses drew');
   // A new data set without a poses file: the old poses are not its trajectory.
   await load(['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd']);
   assert.match(await text('#map-caption'), /^Categories along the scan sequence/);
