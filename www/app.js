@@ -50,7 +50,9 @@ async function loadFiles(list) {
   }
   const names = scans.map((s) => baseName(s.name));
   const run = { datasetId: datasetId(names), demo: null, inputs: scans.map((s, i) => ({ name: names[i], file: s.file })) };
-  await describeAll(run, { suggest: true, withPosesFile: poses.length > 0 });
+  // The data suggest indoor or outdoor unless the user chose another preset or edited the parameters.
+  const own = !['indoor', 'outdoor'].includes(preset()) || $('advanced').value !== JSON.stringify(engine.presetParams(preset()), null, 1);
+  await describeAll(run, { suggest: !own, withPosesFile: poses.length > 0 });
 }
 
 /** @param {File} file */

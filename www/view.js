@@ -48,7 +48,7 @@ export class View {
     this.s = s;
     const n = s.scans.length;
     const sg = s.suggestion;
-    $('preset-note').textContent = sg ? suggestionText(sg) + (sg.preset !== preset ? `; described with ${preset} (as chosen)` : '.') : '';
+    $('preset-note').textContent = sg ? suggestionText(sg) + (sg.preset !== preset ? `; described with ${preset} (${s.demo ? "the demo's" : 'as chosen'})` : '.') : '';
     $('threshold').value = s.lastCut ? s.lastCut.threshold.toFixed(4) : '';
     $('classify').disabled = !s.modelJson;
     if (!s.labels || s.labels.length !== n) {

@@ -98,5 +98,10 @@ test('an enclosed space is indoor, KITTI outdoor; poses go with their data set',
   // A new data set without a poses file: the old poses are not its trajectory.
   await load(['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd']);
   assert.match(await text('#map-caption'), /^Categories along the scan sequence/);
+  // A preset the user picked beyond indoor / outdoor stands for the next data set.
+  await afterRun(h.page, () => h.page.selectOption('#preset', 'indoor_bands'));
+  await load(['kitti00/000094.bin', 'kitti00/000095.bin']);
+  assert.equal(await h.page.inputValue('#preset'), 'indoor_bands');
+  assert.equal(await text('#preset-note'), '');
   assert.deepEqual(h.problems, []);
 });
