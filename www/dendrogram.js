@@ -165,7 +165,8 @@ export class Dendrogram {
     ctx.stroke();
     // Ticks evenly spaced along the axis, labelled with their heights.
     const ticks = [];
-    for (let i = 0; i <= 5; i++) {
+    // (A lone scan has no merges: its axis is only 0.)
+    for (let i = 0; i <= (this.data.rootHeight > 0 ? 5 : 0); i++) {
       const h = i === 5 ? top : this.data.axis.height(i / 5);
       ticks.push(heightLabel(h));
       ctx.fillText(ticks[i], 2, this.#y(h) + 4);
@@ -204,7 +205,7 @@ export class Dendrogram {
     ctx.setLineDash([]);
     ctx.fillStyle = '#e0302b';
     ctx.fillRect(this.canvas.width - M.right - 10, ty - 5, 10, 10);
-    ctx.fillText(`t = ${threshold.toFixed(3)}  (${spans.length} categories)`, M.left, Math.max(12, ty - 6));
+    ctx.fillText(`t = ${threshold.toFixed(3)}  (${spans.length} ${spans.length === 1 ? 'category' : 'categories'})`, M.left, Math.max(12, ty - 6));
     // Thumbnails of each category's most central scan, if there is room.
     const room = Math.min(48, ...spans.map(([a, b], i) => (i + 1 < spans.length ? spans[i + 1][0] - a : 1e9)));
     if (room >= 20 && central) {

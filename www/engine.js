@@ -154,7 +154,7 @@ export class Engine {
     const n = this.set.get('scans').length;
     const choice = this.#ruleChoice();
     if (choice) return { k: choice.k, why: choiceReason(choice) };
-    return { k: Math.min(5, n), why: n <= 5 ? `one per scan (${n} scans)` : 'the default of 5 (no rule in this build yet)' };
+    return { k: Math.min(5, n), why: n === 1 ? 'one scan' : n <= 5 ? `one per scan (${n} scans)` : 'the default of 5 (no rule in this build yet)' };
   }
 
   /**

@@ -41,13 +41,14 @@ export function logFloor(nodes, top) {
  * height. Under 10 the merges spread over a linear axis; up to 100 a square
  * root (which maps the ratio r to sqrt r) keeps the median a tenth of the
  * way up or more; beyond, log.
- * @param {{height: number, children: number[]}[]} nodes @param {number} rootHeight @returns {{scale: Scale, ratio: number}}
+ * `merges`: how many merges the ratio is taken over (below 3 it says little).
+ * @param {{height: number, children: number[]}[]} nodes @param {number} rootHeight @returns {{scale: Scale, ratio: number, merges: number}}
  */
 export function defaultScale(nodes, rootHeight) {
   const h = mergeHeights(nodes);
   const median = h.length ? h[Math.floor((h.length - 1) / 2)] : rootHeight;
   const ratio = median > 0 ? rootHeight / median : 1;
-  return { scale: ratio < 10 ? 'linear' : ratio < 100 ? 'sqrt' : 'log', ratio };
+  return { scale: ratio < 10 ? 'linear' : ratio < 100 ? 'sqrt' : 'log', ratio, merges: h.length };
 }
 
 /** A height as a short label (3 significant digits, no exponent for 0.001..9999). @param {number} h */

@@ -81,7 +81,8 @@ export function taskOf(input, params) {
  * A new data set forgets the last one's poses (they would be drawn as this
  * one's trajectory, issue 16) unless a poses file came with it
  * (`withPosesFile`) or they were loaded while no scans were shown (for the
- * scans to come); and it forgets the last one's preset suggestion.
+ * scans to come); and it forgets the last one's preset suggestion and the
+ * dendrogram axis the user picked (each tree has its own default).
  * @param {State} s @param {{datasetId: string, demo: State['demo'], inputs: Input[], anchors: Record<string, string>, params: Params,
  *   withPosesFile?: boolean}} run
  * @returns {State}
@@ -89,7 +90,7 @@ export function taskOf(input, params) {
 export function beginRun(s, { datasetId, demo, inputs, anchors, params, withPosesFile = false }) {
   const demoReset = demo ? { poses: null, truth: null } : {};
   const keep = withPosesFile || s.posesFor === null;
-  const newSet = datasetId !== s.datasetId ? { poses: keep ? s.poses : null, posesFor: datasetId, suggestion: null } : {};
+  const newSet = datasetId !== s.datasetId ? { poses: keep ? s.poses : null, posesFor: datasetId, suggestion: null, scale: null } : {};
   return { ...s, ...NO_RESULTS, ...newSet, ...demoReset, datasetId, demo, inputs, anchors, params, run: s.run + 1, running: true };
 }
 

@@ -63,7 +63,7 @@ export class View {
     this.catIndex = d?.catIndex ?? null;
     $('scale').value = d?.scale ?? 'linear';
     const named = { linear: 'linear', sqrt: 'square root', log: 'log' };
-    $('scale-note').textContent = d ? `default ${named[d.auto.scale]}: the root is ${d.auto.ratio.toFixed(0)} × the median merge height` : '';
+    $('scale-note').textContent = d && d.auto.merges >= 3 ? `default ${named[d.auto.scale]}: the root is ${d.auto.ratio.toFixed(0)} × the median merge height` : '';
     $('cut-note').textContent = this.#cutNote(s);
     if (d) this.dendrogram.set(d);
     else {
@@ -95,6 +95,7 @@ export class View {
   /** A new run: no errors, sweep, accuracy or note from the last. @param {State} s */
   reset(s) {
     this.highlight(-1); // a category picked in the last data set
+    this.#hover(-1); // and the tooltip over its dendrogram
     this.errors(s);
     this.sweep('');
     this.accuracy('');

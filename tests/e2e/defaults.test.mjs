@@ -61,6 +61,7 @@ test('one scan is one category, said so; nothing breaks', async () => {
   assert.match(await text('#preset-note'), /^outdoor suggested: 26 % of the points of 000094\.bin lie beyond 15 m/);
   assert.equal(await h.page.inputValue('#preset'), 'outdoor');
   assert.ok((await inkedPixels(h.page, 'map')) > 0);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'one-scan.png') });
 });
 
 test('two scans of one room: indoor suggested, their Delta shown, one or two categories', async () => {
@@ -69,6 +70,7 @@ test('two scans of one room: indoor suggested, their Delta shown, one or two cat
   assert.equal(await h.page.inputValue('#preset'), 'indoor');
   assert.match(await text('#cluster-status'), /^Two scans, Delta \d\.\d{3} between them/);
   assert.ok([1, 2].includes(await categories()));
+  await h.page.screenshot({ path: join(ARTIFACTS, 'two-scans.png') });
   // The user's preset wins, and the page says it differs from the suggestion.
   await afterRun(h.page, () => h.page.selectOption('#preset', 'outdoor'));
   assert.match(await text('#preset-note'), /^indoor suggested: .*; described with outdoor \(as chosen\)$/);

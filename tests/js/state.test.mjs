@@ -167,6 +167,8 @@ test('poses of the last data set are dropped by a new one, kept when a poses fil
   const run = (datasetId, withPosesFile = false) => S.beginRun(s, { datasetId, demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}), withPosesFile });
   assert.equal(run('files-2-other').poses, null);
   assert.equal(run('files-2-other').suggestion, null);
+  assert.equal(S.beginRun(S.withScale(s, 'log'), { datasetId: 'files-2-other', demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}) }).scale, null);
+  assert.equal(S.beginRun(S.withScale(s, 'log'), { datasetId: 'files-6-x', demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}) }).scale, 'log');
   assert.equal(run('files-2-other', true).poses, poses);
   assert.equal(run('files-6-x').poses, poses, 'the same set again (a new preset)');
   assert.equal(run('files-6-x').suggestion?.preset, 'outdoor');

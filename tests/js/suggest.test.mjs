@@ -43,7 +43,7 @@ test('each axis maps 0 to the bottom, the top to 1, and back (dragging works in 
 
 test('the default scale follows the root / median merge ratio; the log floor is the lowest merge', () => {
   const tree = (heights) => heights.map((height) => ({ height, children: [1] }));
-  assert.deepEqual(defaultScale(tree([1, 0.5, 0.3]), 1), { scale: 'linear', ratio: 2 });
+  assert.deepEqual(defaultScale(tree([1, 0.5, 0.3]), 1), { scale: 'linear', ratio: 2, merges: 3 });
   assert.equal(defaultScale(tree([16, 0.5, 0.3]), 16).scale, 'sqrt');
   assert.equal(defaultScale(tree([16, 0.05, 0.01]), 16).scale, 'log');
   assert.equal(logFloor(tree([16, 0.05, 0.01, 0]), 16.8), 0.01);
