@@ -5,6 +5,8 @@
 import init, * as wasm from './pkg/placecat.js';
 import { Engine } from './engine.js';
 import { WorkerPool } from './pool.js';
+import { describeInputs } from './describe.js';
+import { importNames } from './imports.js';
 import { View, $, download } from './view.js';
 import * as S from './state.js';
 import { loadNames, saveNames, datasetId } from './store.js';
@@ -24,14 +26,16 @@ const view = new View({
     view.recolour(state);
   },
   onSweepPick: () => cluster(),
+  onScale: (scale) => { state = S.withScale(state, scale); render(); },
 });
 
 const preset = () => /** @type {import('./engine.js').Preset} */ ($('preset').value);
 const showPreset = () => ($('advanced').value = JSON.stringify(engine.presetParams(preset()), null, 1));
+/** @param {string} p */
+const setPreset = (p) => { $('preset').value = p; showPreset(); };
 
 /** @param {string} name @param {string} message */
 const addError = (name, message) => view.errors((state = S.withError(state, name, message)));
-
 
 /** @param {{file: File, name: string}[]} list */
 async function loadFiles(list) {
@@ -45,7 +49,10 @@ async function loadFiles(list) {
     return;
   }
   const names = scans.map((s) => baseName(s.name));
-  await describeAll({ datasetId: datasetId(names), demo: null, inputs: scans.map((s, i) => ({ name: names[i], file: s.file })) });
+  const run = { datasetId: datasetId(names), demo: null, inputs: scans.map((s, i) => ({ name: names[i], file: s.file })) };
+  // The data suggest indoor or outdoor unless the user chose another preset or edited the parameters.
+  const own = !['indoor', 'outdoor'].includes(preset()) || $('advanced').value !== JSON.stringify(engine.presetParams(preset()), null, 1);
+  await describeAll(run, { suggest: !own, withPosesFile: poses.length > 0 });
 }
 
 /** @param {File} file */
@@ -73,16 +80,16 @@ async function loadPoses(file, name) {
 
 /** @param {'indoor' | 'outdoor'} scene */
 function startDemo(scene) {
-  $('preset').value = scene;
-  showPreset();
+  setPreset(scene);
   describeAll({ ...S.demoInputs(scene), demo: scene });
 }
 
 /**
  * Describe every input in the worker pool, with progress; a newer run supersedes this one.
+ * `suggest`: a new data set of files, whose first scan picks the preset (describe.js).
  * @param {{datasetId: string, demo: State['demo'], inputs: import('./state.js').Input[]}} [run]
  */
-async function describeAll({ datasetId, demo, inputs } = state) {
+async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false } = {}) {
   if (state.running) pool.cancel();
   let params;
   try {
@@ -91,25 +98,28 @@ async function describeAll({ datasetId, demo, inputs } = state) {
     view.reset((state = S.withoutResults(state)));
     return addError('parameters', e.message);
   }
-  view.reset((state = S.beginRun(state, { datasetId, demo, inputs, anchors: loadNames(datasetId), params })));
+  view.reset((state = S.beginRun(state, { datasetId, demo, inputs, anchors: loadNames(datasetId), params, withPosesFile })));
   const run = state.run;
   const current = () => run === state.run;
   const total = inputs.length;
   view.progress(0, total, 'running');
-  const session = beginSession(datasetId, { total, preset: preset(), params, demo });
-  const { results, done } = await pool.runAll(inputs.map((input) => S.taskOf(input, params)), {
-    onResult: (i, r) => current() && session.then(() => saveScan(datasetId, i, r)),
+  /** @type {Promise<unknown> | null} the session starts once the preset is known */
+  let session = null;
+  const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
+  const { results, done, suggestion } = await describeInputs(pool, inputs, { params, byPreset }, {
+    onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
+    onResult: (i, r) => current() && (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScan(datasetId, i, r)),
     onError: (i, e) => current() && addError(inputs[i].name, e.message),
     onSettled: (n) => current() && view.progress(n, total, 'running'),
   });
   if (!current()) return;
+  if (suggestion) state = S.withSuggestion(state, suggestion);
   state = S.finishRun(state, results);
   view.progress(done, total, done < total ? 'cancelled' : 'done');
   buildSet();
   // Finished runs, for scripts that drive the page (and the e2e tests).
   document.body.dataset.runs = String(Number(document.body.dataset.runs || 0) + 1);
 }
-
 
 function buildSet() {
   state = S.withSet(state, engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson)));
@@ -127,7 +137,9 @@ function cluster() {
     if (m.method === 'hkmeans') {
       const next = S.nextCut(state);
       state = S.withTree(state, engine.hkmeans(m.hkSeed));
-      return cutTree(next);
+      if (!('auto' in next)) return cutTree(next);
+      state = S.withFirstCut(state, engine.suggestCategories());
+      return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);
     state = S.withLabels(state, labels, engine.medoids(labels));
@@ -153,7 +165,7 @@ function cutTree(how, by) {
 }
 
 function render() {
-  view.render(state);
+  view.render(state, preset(), state.scans.length === 2 && state.set ? engine.delta(0, 1) : undefined);
   const labels = state.labels;
   if (!labels || labels.length !== state.scans.length) return;
   const truth = S.truthLabels(state);
@@ -170,21 +182,12 @@ function runSweep() {
   }
 }
 
-
 /** @param {File} file */
 async function importFile(file) {
-  const text = await file.text();
   try {
-    let said = `Names imported from ${file.name}.`;
-    if (file.name.toLowerCase().endsWith('.csv')) state = S.withNamesCsv(state, text);
-    else {
-      const categories = engine.loadModel(text); // throws on anything malformed
-      // Name current categories after the model's, where unnamed.
-      const names = S.unnamed(state).map(([i, json]) => /** @type {[number, string]} */ ([i, engine.classifyJson(json).name]));
-      state = S.withNames(S.withModel(state, text), new Map(names));
-      said = `Model loaded from ${file.name}: ${categories.map((c) => c.name).join(', ')}. New scans can be classified.`;
-    }
-    $('import-status').textContent = said;
+    const imported = importNames(state, engine, file.name, await file.text());
+    state = imported.state;
+    $('import-status').textContent = imported.said;
     saveNames(state.datasetId, state.anchors);
     render();
   } catch (e) {
@@ -200,14 +203,12 @@ function classifyFiles(list) {
   }));
 }
 
-
 /** Show the scans of the last session (e.g. after a reload mid-run). */
 async function restore() {
   const last = await lastSession();
   if (!last) return;
   state = S.restoreSession(state, last, loadNames(last.datasetId));
-  if (last.preset) $('preset').value = last.preset;
-  showPreset();
+  setPreset(last.preset ?? preset());
   $('info').textContent = `Restored ${state.scans.length} of ${last.total} scans from the last session. Load the files again to describe the rest.`;
   buildSet();
 }

@@ -1,7 +1,10 @@
 // The dendrogram (paper Fig. 1b, 2): node heights are diameters; a red
 // threshold line the user drags; categories coloured at the cut, with a
-// thumbnail of each category's most central scan beneath its leaves.
+// thumbnail of each category's most central scan beneath its leaves. The
+// height axis is linear, square root or log (scale.js); the threshold line
+// is placed and dragged through the same map, so dragging works in each.
 import { colour, drawThumbnail, drawPlaceholder } from './colours.js';
+import { axis, logFloor, heightLabel } from './scale.js';
 
 const M = { left: 46, right: 12, top: 14, bottom: 64 };
 
@@ -10,7 +13,8 @@ const M = { left: 46, right: 12, top: 14, bottom: 64 };
  * What is drawn: the tree's nodes with their x, each node's category at the
  * cut (-1 above it), each category's leaf span, and the threshold.
  * @typedef {{nodes: TreeNode[], x: Float64Array, cat: Int32Array, spans: [number, number][], step: number,
- *   rootHeight: number, threshold: number, top: number, central: Float32Array[], cutNodes: number[]}} Drawn
+ *   rootHeight: number, threshold: number, top: number, central: Float32Array[], cutNodes: number[],
+ *   axis: {at: (h: number) => number, height: (v: number) => number}}} Drawn
  */
 
 export class Dendrogram {
@@ -49,8 +53,10 @@ export class Dendrogram {
     canvas.addEventListener('keydown', (e) => {
       if (!this.data || !['ArrowUp', 'ArrowDown'].includes(e.key)) return;
       e.preventDefault();
-      const step = this.data.rootHeight / 50;
-      this.onThreshold(Math.max(0, this.data.threshold + (e.key === 'ArrowUp' ? step : -step)));
+      // A 50th of the axis, in its scale.
+      const { at, height } = this.data.axis;
+      const v = at(this.data.threshold) + (e.key === 'ArrowUp' ? 0.02 : -0.02);
+      this.onThreshold(Math.max(0, height(Math.min(1, Math.max(0, v)))));
     });
   }
 
@@ -63,12 +69,12 @@ export class Dendrogram {
   }
   /** @param {number} h */
   #y(h) {
-    return M.top + (1 - h / this.#d.top) * this.plotHeight;
+    return M.top + (1 - this.#d.axis.at(h)) * this.plotHeight;
   }
   /** @param {number} y */
   #heightOf(y) {
-    const h = (1 - (y - M.top) / this.plotHeight) * this.#d.top;
-    return Math.min(this.#d.top, Math.max(0, h));
+    const v = Math.min(1, Math.max(0, 1 - (y - M.top) / this.plotHeight));
+    return Math.min(this.#d.top, Math.max(0, this.#d.axis.height(v)));
   }
   /** @param {PointerEvent} e */
   #categoryAt(e) {
@@ -81,9 +87,11 @@ export class Dendrogram {
   /**
    * nodes: the tree's nodes; cutNodes: the tree node of each category;
    * central: per category, the preview points of its most central scan.
-   * @param {{nodes: TreeNode[], rootHeight: number, threshold: number, cutNodes: number[], central: Float32Array[]}} tree
+   * scale: the height axis.
+   * @param {{nodes: TreeNode[], rootHeight: number, threshold: number, cutNodes: number[], central: Float32Array[],
+   *   scale: import('./scale.js').Scale}} tree
    */
-  set({ nodes, rootHeight, threshold, cutNodes, central }) {
+  set({ nodes, rootHeight, threshold, cutNodes, central, scale }) {
     /** @type {number[]} */
     const leaves = [];
     const stack = [0];
@@ -131,7 +139,8 @@ export class Dendrogram {
       }
       spans.push([lo, hi]);
     });
-    this.data = { nodes, x, cat, spans, step, rootHeight, threshold, top: Math.max(rootHeight * 1.05, 1e-6), central, cutNodes };
+    const top = Math.max(rootHeight * 1.05, 1e-6);
+    this.data = { nodes, x, cat, spans, step, rootHeight, threshold, top, central, cutNodes, axis: axis(scale, top, logFloor(nodes, top)) };
     this.draw();
   }
 
@@ -154,10 +163,15 @@ export class Dendrogram {
     ctx.moveTo(M.left - 6, M.top);
     ctx.lineTo(M.left - 6, M.top + this.plotHeight);
     ctx.stroke();
-    for (let i = 0; i <= 4; i++) {
-      const h = (top * i) / 4;
-      ctx.fillText(h.toFixed(2), 2, this.#y(h) + 4);
+    // Ticks evenly spaced along the axis, labelled with their heights.
+    const ticks = [];
+    // (A lone scan has no merges: its axis is only 0.)
+    for (let i = 0; i <= (this.data.rootHeight > 0 ? 5 : 0); i++) {
+      const h = i === 5 ? top : this.data.axis.height(i / 5);
+      ticks.push(heightLabel(h));
+      ctx.fillText(ticks[i], 2, this.#y(h) + 4);
     }
+    canvas.dataset.ticks = ticks.join(' '); // what the axis says, readable outside the canvas
     // Links.
     ctx.lineWidth = 1.2;
     nodes.forEach((n, id) => {
@@ -191,7 +205,7 @@ export class Dendrogram {
     ctx.setLineDash([]);
     ctx.fillStyle = '#e0302b';
     ctx.fillRect(this.canvas.width - M.right - 10, ty - 5, 10, 10);
-    ctx.fillText(`t = ${threshold.toFixed(3)}  (${spans.length} categories)`, M.left, Math.max(12, ty - 6));
+    ctx.fillText(`t = ${threshold.toFixed(3)}  (${spans.length} ${spans.length === 1 ? 'category' : 'categories'})`, M.left, Math.max(12, ty - 6));
     // Thumbnails of each category's most central scan, if there is room.
     const room = Math.min(48, ...spans.map(([a, b], i) => (i + 1 < spans.length ? spans[i + 1][0] - a : 1e9)));
     if (room >= 20 && central) {

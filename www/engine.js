@@ -16,11 +16,15 @@
 /** @typedef {import('./pkg/placecat.js').CategorySummary} CategorySummary */
 /** @typedef {import('./pkg/placecat.js').Preset} Preset */
 /** @typedef {import('./pkg/placecat.js').Seeding} Seeding */
+import { choiceReason, rangeShare, siteSubsample, suggestPreset } from './suggest.js';
 
 /**
- * One described scan as plain data (what a worker sends back).
+ * One described scan as plain data (what a worker sends back). `site`: a
+ * few hundred of its points, x, y (sensor frame), for the map; `far`: the
+ * share of its points beyond 10 m, when asked for (the preset suggestion);
+ * `preset`: the preset it was described with, when the describer chose it.
  * @typedef {{name: string, format: string, descriptorJson: string, summary: Summary,
- *   preview: Float32Array, label?: string, pose?: Pose}} ScanResult
+ *   preview: Float32Array, site?: Float32Array, label?: string, pose?: Pose, far?: number, preset?: 'indoor' | 'outdoor'}} ScanResult
  */
 /** A tree as plain data: its nodes (node 0 is the root) and the root's height.
  * @typedef {{nodes: TreeNode[], rootHeight: number}} TreeData */
@@ -139,6 +143,34 @@ export class Engine {
     return cutData(cut, cut.threshold);
   }
 
+  /**
+   * The first cut of the kept tree: how many categories, and why. The rule
+   * that picks it from the data (issue 14 item 3) is not in the wasm API
+   * yet; until it is, this is the page's old default, 5 (at most one per
+   * scan). Wiring the rule is the one line marked below.
+   * @returns {{k: number, why: string}}
+   */
+  suggestCategories() {
+    const n = this.set.get('scans').length;
+    const choice = this.#ruleChoice();
+    if (choice) return { k: choice.k, why: choiceReason(choice) };
+    return { k: Math.min(5, n), why: n === 1 ? 'one scan' : n <= 5 ? `one per scan (${n} scans)` : 'the default of 5 (no rule in this build yet)' };
+  }
+
+  /**
+   * The rule's choice for the kept tree (the core's choose_k Choice: k, rule,
+   * scores, one_category), once the wasm API has it; null until then.
+   * @returns {{k: number, rule: string} | null}
+   */
+  #ruleChoice() {
+    return null; // <- the one line to wire, e.g. this.tree.get('tree').chooseK(this.set.get('scans'))
+  }
+
+  /** Delta between two scans of the set. @param {number} i @param {number} j @returns {number} */
+  delta(i, j) {
+    return this.set.get('scans').delta(i, j);
+  }
+
   /** @param {number} k @param {Seeding} seeding @param {number} seed @returns {Int32Array} */
   kmeans(k, seeding, seed) {
     return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0).labels);
@@ -210,28 +242,46 @@ export class Describer {
    * @param {number} [previewPoints] @returns {ScanResult}
    */
   describe(bytes, name, params, previewPoints = 3000) {
-    return scoped(this.wasm.describeScan(bytes, name, params, undefined, previewPoints), (scan) => ({
-      name: scan.name,
-      format: scan.format,
-      descriptorJson: scan.descriptorJson(),
-      summary: scan.summary(),
-      preview: scan.preview(),
-    }));
+    return scoped(this.wasm.describeScan(bytes, name, params, undefined, previewPoints), (scan) => {
+      const preview = scan.preview();
+      return { name: scan.name, format: scan.format, descriptorJson: scan.descriptorJson(), summary: scan.summary(), preview, site: siteSubsample(preview) };
+    });
+  }
+
+  /** The share of a scan's points beyond 10 m (all its points, not the preview). @param {Uint8Array} bytes @param {string} name */
+  farShare(bytes, name) {
+    return rangeShare(scoped(this.wasm.readScan(bytes, name), (scan) => scan.positions())).far;
+  }
+
+  /**
+   * The first scan of a data set: its share of far points decides the
+   * preset, and it is described with that preset's parameters (`byPreset`).
+   * The file's bytes are read once; only the parse is done twice (positions,
+   * then the descriptor), so nothing is read again once the preset is known.
+   * @param {Uint8Array} bytes @param {string} name @param {Record<'indoor' | 'outdoor', Params>} byPreset
+   * @param {number} [previewPoints] @returns {ScanResult}
+   */
+  describeSuggesting(bytes, name, byPreset, previewPoints = 3000) {
+    const far = this.farShare(bytes, name);
+    const preset = suggestPreset(far);
+    return { ...this.describe(bytes, name, byPreset[preset], previewPoints), far, preset };
   }
 
   /**
    * Scan `index` of a simulated data set, described, with its label and pose.
-   * @param {{scene: 'indoor' | 'warehouse' | 'outdoor', seed: number, scans: number, index: number}} sim
+   * With `probe`, also its share of far points (the demo's preset suggestion).
+   * @param {{scene: 'indoor' | 'warehouse' | 'outdoor', seed: number, scans: number, index: number, probe?: boolean}} sim
    * @param {Params} params @param {number} [previewPoints] @returns {ScanResult}
    */
-  simulate({ scene, seed, scans, index }, params, previewPoints = 3000) {
+  simulate({ scene, seed, scans, index, probe }, params, previewPoints = 3000) {
     const key = `${scene}/${seed}/${scans}`;
     if (key !== this.simKey || !this.simulator.value) {
       this.simulator.set(new this.wasm.Simulator(scene, seed, scans));
       this.simKey = key;
     }
     const s = this.simulator.get('simulator').scan(index);
-    return { ...this.describe(s.bytes, s.name, params, previewPoints), label: s.label, pose: s.pose };
+    const far = probe ? { far: this.farShare(s.bytes, s.name) } : {};
+    return { ...this.describe(s.bytes, s.name, params, previewPoints), label: s.label, pose: s.pose, ...far };
   }
 
   /**

@@ -1,10 +1,13 @@
 // The trajectory map (paper Fig. 1a): poses as a path coloured by category
 // over a faint top-down map of the scans' points placed by their poses.
 // Without poses: a strip of categories along the scan sequence (Fig. 4, 6).
+// The site is drawn from each scan's `site` subsample (a few hundred x, y
+// points, suggest.js), so the map's memory stays a few kilobytes per scan.
 import { colour, drawPlaceholder } from './colours.js';
 
-/** @typedef {{name: string, pose?: import('./engine.js').Pose, preview?: Float32Array}} MapScan */
-/** @typedef {{scans: MapScan[], labels: Int32Array, usePoses: boolean}} MapData */
+/** @typedef {{name: string, pose?: import('./engine.js').Pose, site?: Float32Array}} MapScan */
+/** `drawSite`: the poses carry headings (not CSV poses, which have none), so scans can be placed.
+ * @typedef {{scans: MapScan[], labels: Int32Array, usePoses: boolean, drawSite: boolean}} MapData */
 
 export class TrajectoryMap {
   /** @param {HTMLCanvasElement} canvas @param {{onSelect: (i: number) => void}} on */
@@ -55,8 +58,8 @@ export class TrajectoryMap {
   }
 
   /** Scans (a pose each when usePoses) and each one's category index. @param {MapData} data */
-  set({ scans, labels, usePoses }) {
-    this.data = { scans, labels, usePoses };
+  set({ scans, labels, usePoses, drawSite }) {
+    this.data = { scans, labels, usePoses, drawSite };
     this.selected = -1;
     this.#fit();
     this.draw();
@@ -122,22 +125,18 @@ export class TrajectoryMap {
     const { ctx, canvas } = this;
     if (!this.data) return drawPlaceholder(canvas, 'The trajectory map (with a poses file) or the category strip appears here.');
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    const { scans, labels, usePoses } = this.data;
+    const { scans, labels, usePoses, drawSite } = this.data;
     const pos = this.#positions();
     if (usePoses) {
-      // Faint points: every scan's preview, rotated and moved by its pose.
-      ctx.fillStyle = 'rgba(60, 70, 90, 0.18)';
-      const budget = Math.max(1, Math.floor(200000 / scans.length));
-      for (const s of scans) {
-        const { preview: p, pose } = s;
+      // The site, faint grey under the path: each scan's subsample turned
+      // by its heading and moved to its position (top-down, z dropped).
+      ctx.fillStyle = 'rgba(70, 78, 92, 0.22)';
+      for (const { site: p, pose } of drawSite ? scans : []) {
         if (!p || !pose) continue;
         const c = Math.cos(pose.yaw), sn = Math.sin(pose.yaw);
-        const stride = Math.max(1, Math.floor(p.length / 3 / budget)) * 3;
-        for (let i = 0; i < p.length; i += stride) {
-          const wx = pose.position[0] + c * p[i] - sn * p[i + 1];
-          const wy = pose.position[1] + sn * p[i] + c * p[i + 1];
-          const [x, y] = this.#screen([wx, wy]);
-          if (x >= 0 && y >= 0 && x < canvas.width && y < canvas.height) ctx.fillRect(x, y, 1, 1);
+        for (let i = 0; i + 1 < p.length; i += 2) {
+          const [x, y] = this.#screen([pose.position[0] + c * p[i] - sn * p[i + 1], pose.position[1] + sn * p[i] + c * p[i + 1]]);
+          if (x >= 0 && y >= 0 && x < canvas.width && y < canvas.height) ctx.fillRect(x, y, 1.5, 1.5);
         }
       }
       // The path, coloured by category.

@@ -48,8 +48,8 @@ export function beginSession(datasetId, info) {
 
 /** Store one described scan. */
 export function saveScan(datasetId, index, scan) {
-  const { name, descriptorJson, summary, preview, pose, label, format } = scan;
-  return tx([STORE], 'readwrite', (t) => t.objectStore(STORE).put({ datasetId, index, name, descriptorJson, summary, preview, pose, label, format })).catch(() => {});
+  const { name, descriptorJson, summary, preview, site, pose, label, format } = scan;
+  return tx([STORE], 'readwrite', (t) => t.objectStore(STORE).put({ datasetId, index, name, descriptorJson, summary, preview, site, pose, label, format })).catch(() => {});
 }
 
 /** The last session's data set and its scans in order, or null. */

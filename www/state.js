@@ -3,6 +3,8 @@
 // no wasm. What the views show is derived here too.
 import { fileRows, formatCsv } from './csv.js';
 import { baseName } from './files.js';
+import { defaultScale } from './scale.js';
+import { siteSubsample } from './suggest.js';
 
 /** @typedef {import('./engine.js').ScanResult} ScanResult */
 /** @typedef {import('./engine.js').Params} Params */
@@ -27,6 +29,7 @@ import { baseName } from './files.js';
  * @property {ScanResult[]} scans the described ones, in order (base names)
  * @property {{name: string, message: string}[]} errors
  * @property {Poses | null} poses
+ * @property {string | null} posesFor the data set the poses belong to; null: loaded before any scans, for the next
  * @property {Map<string, string> | null} truth ground truth, scan name -> label
  * @property {Params | null} params
  * @property {number} run the current run (a newer one supersedes it)
@@ -41,14 +44,19 @@ import { baseName } from './files.js';
  * @property {Category[]} categories by label
  * @property {Record<string, string>} anchors category names, by the scan that carries them
  * @property {string} modelJson the loaded model, '' for none
+ * @property {Suggestion | null} suggestion the preset the data suggest (per data set)
+ * @property {import('./scale.js').Scale | null} scale the dendrogram axis the user chose (null: the tree's default)
+ * @property {{k: number, why: string} | null} firstCut how the first cut of the current tree was chosen
  */
+/** The preset suggested for a data set, from the share of far points of its first scan.
+ * @typedef {{preset: 'indoor' | 'outdoor', far: number, from: string}} Suggestion */
 
 /** @returns {State} */
 export function initialState() {
   return {
-    datasetId: '', demo: null, inputs: [], scans: [], errors: [], poses: null, truth: null, params: null,
+    datasetId: '', demo: null, inputs: [], scans: [], errors: [], poses: null, posesFor: null, truth: null, params: null,
     run: 0, running: false, set: null, tree: null, cut: null, cutBy: undefined, lastCut: null, labels: null, categories: [],
-    anchors: {}, modelJson: '',
+    anchors: {}, modelJson: '', suggestion: null, scale: null, firstCut: null,
   };
 }
 
@@ -70,12 +78,35 @@ export function taskOf(input, params) {
 
 /**
  * A new run over `inputs`: results cleared, names of this data set loaded.
- * @param {State} s @param {{datasetId: string, demo: State['demo'], inputs: Input[], anchors: Record<string, string>, params: Params}} run
+ * A new data set forgets the last one's poses (they would be drawn as this
+ * one's trajectory, issue 16) unless a poses file came with it
+ * (`withPosesFile`) or they were loaded while no scans were shown (for the
+ * scans to come); and it forgets the last one's preset suggestion and the
+ * dendrogram axis the user picked (each tree has its own default).
+ * @param {State} s @param {{datasetId: string, demo: State['demo'], inputs: Input[], anchors: Record<string, string>, params: Params,
+ *   withPosesFile?: boolean}} run
  * @returns {State}
  */
-export function beginRun(s, { datasetId, demo, inputs, anchors, params }) {
+export function beginRun(s, { datasetId, demo, inputs, anchors, params, withPosesFile = false }) {
   const demoReset = demo ? { poses: null, truth: null } : {};
-  return { ...s, ...NO_RESULTS, ...demoReset, datasetId, demo, inputs, anchors, params, run: s.run + 1, running: true };
+  const keep = withPosesFile || s.posesFor === null;
+  const newSet = datasetId !== s.datasetId ? { poses: keep ? s.poses : null, posesFor: datasetId, suggestion: null, scale: null } : {};
+  return { ...s, ...NO_RESULTS, ...newSet, ...demoReset, datasetId, demo, inputs, anchors, params, run: s.run + 1, running: true };
+}
+
+/** The parameters the run describes with (the suggested preset's). @param {State} s @param {Params} params @returns {State} */
+export function withParams(s, params) {
+  return { ...s, params };
+}
+
+/** @param {State} s @param {Suggestion | null} suggestion @returns {State} */
+export function withSuggestion(s, suggestion) {
+  return { ...s, suggestion };
+}
+
+/** @param {State} s @param {State['scale']} scale @returns {State} */
+export function withScale(s, scale) {
+  return { ...s, scale };
 }
 
 /** @param {State} s @returns {State} */
@@ -106,7 +137,8 @@ export function finishRun(s, results) {
  * @param {Record<string, string>} anchors @returns {State}
  */
 export function restoreSession(s, last, anchors) {
-  const scans = last.scans.map((r) => ({ ...r }));
+  // Sessions stored before the map kept a site subsample get one from the preview.
+  const scans = last.scans.map((r) => ({ ...r, site: r.site ?? siteSubsample(r.preview) }));
   return { ...s, ...NO_RESULTS, datasetId: last.datasetId, anchors, params: last.params, demo: last.demo ?? null, inputs: [], scans, truth: truthOfScans(scans) ?? s.truth };
 }
 
@@ -120,19 +152,24 @@ export function withTruthCsv(s, text) {
   return { ...s, truth: new Map(fileRows(text).filter(([, l]) => l !== '').map(([f, l]) => [baseName(f), l])) };
 }
 
-/** @param {State} s @param {Poses | null} poses @returns {State} */
+/** Poses for the scans shown, or (none shown) for the next data set. @param {State} s @param {Poses | null} poses @returns {State} */
 export function withPoses(s, poses) {
-  return { ...s, poses };
+  return { ...s, poses, posesFor: s.scans.length ? s.datasetId : null };
 }
 
 /** A new descriptor set: no clustering yet. @param {State} s @param {State['set']} set @returns {State} */
 export function withSet(s, set) {
-  return { ...s, set, tree: null, cut: null, labels: null, categories: [], cutBy: undefined, lastCut: null };
+  return { ...s, set, tree: null, cut: null, labels: null, categories: [], cutBy: undefined, lastCut: null, firstCut: null };
 }
 
 /** A new tree (hierarchical k-means), not yet cut. @param {State} s @param {TreeData} tree @returns {State} */
 export function withTree(s, tree) {
-  return { ...s, tree, cut: null, labels: null, categories: [] };
+  return { ...s, tree, cut: null, labels: null, categories: [], firstCut: null };
+}
+
+/** The first cut of a tree, and why. @param {State} s @param {{k: number, why: string}} firstCut @returns {State} */
+export function withFirstCut(s, firstCut) {
+  return { ...s, firstCut };
 }
 
 /**
@@ -151,11 +188,12 @@ export function withLabels(s, labels, medoids, cut = null) {
 
 /**
  * How to cut a new tree: into as many categories as the user asked for,
- * at the threshold of the last cut, or (the first time) into 5.
- * @param {State} s @returns {{k: number} | {threshold: number}}
+ * at the threshold of the last cut, or (the first time) as the engine
+ * suggests (`auto`).
+ * @param {State} s @returns {{k: number} | {threshold: number} | {auto: true}}
  */
 export function nextCut(s) {
-  if (!s.lastCut) return { k: clampCategories(s, 5) };
+  if (!s.lastCut) return { auto: true };
   if (s.cutBy === 'categories') return { k: clampCategories(s, s.lastCut.count) };
   return { threshold: s.lastCut.threshold };
 }
@@ -272,16 +310,18 @@ export function truthLabels(s) {
 /**
  * Each scan's pose, and whether there is a map to draw (every scan has
  * one). The indoor demo's rooms are separate places: a strip, no map.
- * @param {State} s @returns {{poses: (Pose | undefined)[], usePoses: boolean, note: string}}
+ * `drawSite`: the poses have headings to place the scans' points by (CSV
+ * poses have none).
+ * @param {State} s @returns {{poses: (Pose | undefined)[], usePoses: boolean, drawSite: boolean, note: string}}
  */
 export function posesOf(s) {
-  if (s.demo) return { poses: s.scans.map((r) => r.pose), usePoses: s.demo === 'outdoor', note: '' };
+  if (s.demo) return { poses: s.scans.map((r) => r.pose), usePoses: s.demo === 'outdoor', drawSite: true, note: '' };
   const p = s.poses;
-  if (!p) return { poses: s.scans.map(() => undefined), usePoses: false, note: '' };
+  if (!p) return { poses: s.scans.map(() => undefined), usePoses: false, drawSite: false, note: '' };
   const byName = new Map(p.poses.filter((q) => q.name).map((q) => [baseName(q.name ?? ''), q]));
   const poses = s.scans.map((r) => (p.format === 'csv' ? byName.get(r.name) : p.poses[s.inputs.findIndex((x) => x.name === r.name)]));
   const note = p.format !== 'csv' && p.poses.length !== s.inputs.length ? `poses: ${p.poses.length} poses for ${s.inputs.length} scans, matched in name order` : '';
-  return { poses, usePoses: poses.every(Boolean), note };
+  return { poses, usePoses: poses.every(Boolean), drawSite: p.format !== 'csv', note };
 }
 
 /** The dendrogram's data: per cut node, its category index and central preview. @param {State} s */
@@ -292,5 +332,7 @@ export function dendrogramOf(s) {
   const index = new Map(s.categories.map((c, i) => [c.label, i]));
   const catIndex = s.cut.nodes.map((node) => /** @type {number} */ (index.get(labels[nodes[node].members[0]])));
   const central = catIndex.map((i) => s.scans[s.categories[i].medoid].preview);
-  return { nodes, rootHeight, threshold: s.cut.threshold, cutNodes: s.cut.nodes, central, catIndex };
+  const auto = defaultScale(nodes, rootHeight);
+  const scale = s.scale ?? auto.scale;
+  return { nodes, rootHeight, threshold: s.cut.threshold, cutNodes: s.cut.nodes, central, catIndex, scale, auto };
 }

@@ -7,6 +7,7 @@ import { Legend } from './legend.js';
 import { shareColours } from './colours.js';
 import { renderSweep, f32String } from './sweep.js';
 import { categoryIndex, colourSlots, dendrogramOf, displayName, errorText, nameOf, posesOf } from './state.js';
+import { suggestionText } from './suggest.js';
 
 /** @typedef {import('./state.js').State} State */
 /** @typedef {import('./state.js').Method} Method */
@@ -19,9 +20,10 @@ const canvas = (id) => /** @type {HTMLCanvasElement} */ (document.getElementById
 export class View {
   /**
    * @param {{onThreshold: (t: number) => void, onName: (i: number, name: string) => void,
-   *   onSweepPick: () => void}} on
+   *   onSweepPick: () => void, onScale: (scale: import('./scale.js').Scale) => void}} on
    */
   constructor(on) {
+    $('scale').addEventListener('change', () => on.onScale(/** @type {import('./scale.js').Scale} */ ($('scale').value)));
     this.on = on;
     /** @type {State | null} the state last rendered */
     this.s = null;
@@ -37,10 +39,16 @@ export class View {
     this.map.draw();
   }
 
-  /** Everything that depends on the clustering. @param {State} s */
-  render(s) {
+  /**
+   * Everything that depends on the clustering. `preset`: the one selected;
+   * `delta`: Delta between the scans when there are two.
+   * @param {State} s @param {string} preset @param {number} [delta]
+   */
+  render(s, preset, delta) {
     this.s = s;
     const n = s.scans.length;
+    const sg = s.suggestion;
+    $('preset-note').textContent = sg ? suggestionText(sg) + (sg.preset !== preset ? `; described with ${preset} (${s.demo ? "the demo's" : 'as chosen'})` : '.') : '';
     $('threshold').value = s.lastCut ? s.lastCut.threshold.toFixed(4) : '';
     $('classify').disabled = !s.modelJson;
     if (!s.labels || s.labels.length !== n) {
@@ -53,26 +61,41 @@ export class View {
     this.legend.set(s.categories.map((c, i) => ({ name: nameOf(s, c), size: c.members.length, preview: s.scans[c.medoid].preview })));
     const d = dendrogramOf(s);
     this.catIndex = d?.catIndex ?? null;
+    $('scale').value = d?.scale ?? 'linear';
+    const named = { linear: 'linear', sqrt: 'square root', log: 'log' };
+    $('scale-note').textContent = d && d.auto.merges >= 3 ? `default ${named[d.auto.scale]}: the root is ${d.auto.ratio.toFixed(0)} × the median merge height` : '';
+    $('cut-note').textContent = this.#cutNote(s);
     if (d) this.dendrogram.set(d);
     else {
       this.dendrogram.data = null;
       this.dendrogram.draw();
     }
-    const { poses, usePoses, note } = posesOf(s);
+    const { poses, usePoses, drawSite, note } = posesOf(s);
     if (note) $('info').textContent = note;
     $('map-caption').textContent = usePoses
       ? 'Trajectory map: drag to pan, wheel to zoom, click a scan'
       : 'Categories along the scan sequence (no poses file): click a scan';
-    this.map.set({ scans: s.scans.map((r, i) => ({ ...r, pose: poses[i] })), labels: categoryIndex(s), usePoses });
+    this.map.set({ scans: s.scans.map((r, i) => ({ ...r, pose: poses[i] })), labels: categoryIndex(s), usePoses, drawSite });
     const noise = s.labels.filter((l) => l < 0).length;
     const path = s.set && !s.set.usesMatrix ? ` (centre-based path: more than ${s.set.matrixLimit} scans, no Delta matrix)` : '';
-    this.status(`${s.categories.length} categories${noise ? `, ${noise} noise` : ''} from ${n} scans${path}`);
+    const few = n === 1 ? 'One scan is one category: load more scans to compare places. '
+      : n === 2 && delta !== undefined ? `Two scans, Delta ${delta.toFixed(3)} between them: one category if they show one kind of place, two if not. ` : '';
+    this.status(`${few}${s.categories.length} ${s.categories.length === 1 ? 'category' : 'categories'}${noise ? `, ${noise} noise` : ''} from ${n} ${n === 1 ? 'scan' : 'scans'}${path}`);
     $('cluster-status').dataset.categories = String(s.categories.length);
+  }
+
+  /** Why the tree is cut where it is: the first cut's rule, or the user's cut. @param {State} s */
+  #cutNote(s) {
+    if (!s.cut) return '';
+    const k = s.cut.nodes.length;
+    const first = s.firstCut && !s.cutBy && s.firstCut.k === k;
+    return `${k} ${k === 1 ? 'category' : 'categories'}: ${first ? s.firstCut?.why : 'your cut'}`;
   }
 
   /** A new run: no errors, sweep, accuracy or note from the last. @param {State} s */
   reset(s) {
     this.highlight(-1); // a category picked in the last data set
+    this.#hover(-1); // and the tooltip over its dendrogram
     this.errors(s);
     this.sweep('');
     this.accuracy('');

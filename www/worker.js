@@ -10,7 +10,9 @@ const ready = init().then(() => new Describer(wasm));
 async function run(task) {
   const describer = await ready;
   if (task.type === 'describe') {
-    return describer.describe(new Uint8Array(await task.file.arrayBuffer()), task.name, task.params, task.previewPoints);
+    const bytes = new Uint8Array(await task.file.arrayBuffer());
+    if (task.byPreset) return describer.describeSuggesting(bytes, task.name, task.byPreset, task.previewPoints);
+    return describer.describe(bytes, task.name, task.params, task.previewPoints);
   }
   if (task.type === 'simulate') return describer.simulate(task, task.params, task.previewPoints);
   if (task.type === 'classify') {
@@ -23,7 +25,7 @@ self.onmessage = async (e) => {
   const { id, task } = e.data;
   try {
     const r = await run(task);
-    const transfer = 'preview' in r ? [r.preview.buffer] : [];
+    const transfer = 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
     self.postMessage({ id, ok: true, result: r }, { transfer });
   } catch (err) {
     self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });

@@ -155,3 +155,36 @@ test('Slot frees what it held when it takes another; scoped frees even when the 
   assert.equal(scoped(obj(4), (o) => o.id * 10), 40);
   assert.deepEqual(freed, [1, 2, 3, 4]);
 });
+
+test('the first scan of a data set picks the preset from its far points and is described with it (real scans)', async () => {
+  const { readFileSync } = await import('node:fs');
+  const real = new URL('../../../shared/data/real/', import.meta.url) // as tests/e2e/harness.mjs's REAL;
+  const d = new Describer(wasm);
+  const byPreset = { indoor: wasm.presetParams('indoor'), outdoor: wasm.presetParams('outdoor') };
+  const kitti = d.describeSuggesting(readFileSync(new URL('kitti00/000094.bin', real)), '000094.bin', byPreset);
+  // 26.1 % of its 121618 points lie beyond 15 m horizontally (a road).
+  assert.equal(kitti.preset, 'outdoor');
+  assert.ok(Math.abs((kitti.far ?? 0) - 0.261) < 0.001, `${kitti.far}`);
+  assert.equal(JSON.parse(kitti.descriptorJson).cols, 5, 'the outdoor preset has 5 ranges');
+  const room = d.describeSuggesting(readFileSync(new URL('pcl_room/room_scan1.pcd', real)), 'room_scan1.pcd', byPreset);
+  assert.equal(room.preset, 'indoor');
+  assert.ok((room.far ?? 1) < 0.01);
+  assert.equal(JSON.parse(room.descriptorJson).cols, 7, 'the indoor preset has 7 ranges');
+  // The map keeps 400 x, y pairs of a scan at most.
+  assert.ok(kitti.site && kitti.site.length <= 800 && kitti.site.length >= 700, `${kitti.site?.length}`);
+  d.dispose();
+});
+
+test('the first cut: the engine suggests a number of categories with a reason (the page default until the rule is wired)', () => {
+  const e = new Engine(wasm);
+  e.load(params, scans.slice(0, 3).map((s) => s.descriptorJson));
+  e.hkmeans(0);
+  assert.deepEqual(e.suggestCategories(), { k: 3, why: 'one per scan (3 scans)' });
+  e.load(params, scans.map((s) => s.descriptorJson));
+  e.hkmeans(0);
+  const first = e.suggestCategories();
+  assert.ok(first.k >= 1 && first.k <= 40 && first.why.length > 0, JSON.stringify(first));
+  // Two scans: their Delta, symmetric and above 0 for two rooms of another kind.
+  assert.ok(e.delta(0, 39) > 0 && Math.abs(e.delta(0, 39) - e.delta(39, 0)) < 1e-6);
+  e.dispose();
+});

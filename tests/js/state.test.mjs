@@ -103,9 +103,9 @@ test('ground truth: labels.csv by base name, or the labels the demo scans carry'
   assert.deepEqual(S.truthLabels(demo), ['office', 'lab']);
 });
 
-test('a new tree is cut as the user cut the last: into 5 at first, then by count or threshold', () => {
+test('a new tree is cut as the user cut the last: as the engine suggests at first, then by count or threshold', () => {
   let s = clustered();
-  assert.deepEqual(S.nextCut(s), { k: 5 });
+  assert.deepEqual(S.nextCut(s), { auto: true });
   s = S.withTree(s, { nodes: [], rootHeight: 1 });
   s = S.withLabels(s, Int32Array.from([0, 0, 1, 1, 2, 2]), new Map([[0, 0], [1, 2], [2, 4]]), { labels: Int32Array.from([0, 0, 1, 1, 2, 2]), nodes: [1, 2, 3], threshold: 0.25 });
   assert.deepEqual(S.nextCut(s), { threshold: 0.25 });
@@ -159,4 +159,46 @@ test('the dendrogram gets, per cut node, its category and central preview', () =
   assert.deepEqual(d?.catIndex, [1, 0]);
   assert.deepEqual(d?.central.map((p) => p[0]), [3, 1]);
   assert.equal(d?.threshold, 0.6);
+});
+
+test('poses of the last data set are dropped by a new one, kept when a poses file comes with it or the same set is described again', () => {
+  const poses = /** @type {any} */ ({ format: 'kitti', poses: [{ position: [0, 0, 0], yaw: 0 }] });
+  const s = S.withSuggestion(S.withPoses(clustered(), poses), { preset: 'outdoor', far: 0.5, from: 'a.ply' });
+  const run = (datasetId, withPosesFile = false) => S.beginRun(s, { datasetId, demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}), withPosesFile });
+  assert.equal(run('files-2-other').poses, null);
+  assert.equal(run('files-2-other').suggestion, null);
+  assert.equal(S.beginRun(S.withScale(s, 'log'), { datasetId: 'files-2-other', demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}) }).scale, null);
+  assert.equal(S.beginRun(S.withScale(s, 'log'), { datasetId: 'files-6-x', demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}) }).scale, 'log');
+  assert.equal(run('files-2-other', true).poses, poses);
+  assert.equal(run('files-6-x').poses, poses, 'the same set again (a new preset)');
+  assert.equal(run('files-6-x').suggestion?.preset, 'outdoor');
+  // Poses picked before any scans are for the scans to come.
+  const early = S.withPoses(S.initialState(), poses);
+  assert.equal(S.beginRun(early, { datasetId: 'files-2-new', demo: null, inputs: [], anchors: {}, params: /** @type {any} */ ({}) }).poses, poses);
+});
+
+test('CSV poses have no heading: the map draws the trajectory but not the site', () => {
+  const pose = (x, name) => ({ position: [x, 0, 0], yaw: 0, name });
+  const s = { ...clustered(), inputs: ['a', 'b', 'c', 'd', 'e', 'f'].map((n) => ({ name: `${n}.ply` })) };
+  const csv = S.posesOf(S.withPoses(s, /** @type {any} */ ({ format: 'csv', poses: ['a', 'b', 'c', 'd', 'e', 'f'].map((n, i) => pose(i, `${n}.ply`)) })));
+  assert.deepEqual([csv.usePoses, csv.drawSite], [true, false]);
+  const tum = S.posesOf(S.withPoses(s, /** @type {any} */ ({ format: 'tum', poses: [0, 1, 2, 3, 4, 5].map((i) => pose(i)) })));
+  assert.deepEqual([tum.usePoses, tum.drawSite], [true, true]);
+});
+
+test('the dendrogram takes the user\'s scale, else the tree\'s default', () => {
+  // Merges at 0.01 .. 0.05 under a root at 16: the root is 533 x the median.
+  const nodes = [
+    { height: 16, children: [1, 2], members: [0, 1, 2, 3] },
+    { height: 0.01, children: [3, 4], members: [0, 1] }, { height: 0.03, children: [5, 6], members: [2, 3] },
+    ...[0, 1, 2, 3].map((m) => ({ height: 0, children: [], members: [m] })),
+  ];
+  let s = S.withSet(clustered(), { size: 4, usesMatrix: true, matrixLimit: 5000 });
+  s = { ...s, scans: s.scans.slice(0, 4) };
+  s = S.withTree(s, { nodes, rootHeight: 16 });
+  s = S.withLabels(s, Int32Array.from([0, 0, 1, 1]), new Map([[0, 0], [1, 2]]), { labels: Int32Array.from([0, 0, 1, 1]), nodes: [1, 2], threshold: 1 });
+  const d = S.dendrogramOf(s);
+  assert.equal(d?.scale, 'log');
+  assert.equal(Math.round(d?.auto.ratio ?? 0), 533);
+  assert.equal(S.dendrogramOf(S.withScale(s, 'linear'))?.scale, 'linear');
 });
