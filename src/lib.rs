@@ -91,6 +91,7 @@ pub mod error;
 pub mod eval;
 pub mod io;
 pub mod model;
+pub mod rng;
 pub mod sim;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -2,9 +2,10 @@
 //! classify a new scan (each category's centre in descriptor space), with
 //! the descriptor parameters it was made with. Saved and loaded as JSON.
 
-use crate::cluster::Space;
 use crate::descriptor::{Descriptor, DescriptorParams};
-use crate::distance::{matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared};
+use crate::distance::{
+    check_shape, matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared, Space,
+};
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 
@@ -173,12 +174,7 @@ impl LabelledModel {
 
     /// The nearest category of a described scan.
     pub fn classify(&self, d: &Descriptor) -> Result<Classification> {
-        if d.rows != self.rows || d.cols != self.cols {
-            return Err(Error::Mismatch(format!(
-                "the scan was described with other parameters ({}x{}) than the model's ({}x{})",
-                d.rows, d.cols, self.rows, self.cols
-            )));
-        }
+        check_shape((d.rows, d.cols), (self.rows, self.cols))?;
         let p = Prepared::new(d, DistanceOptions::from(&self.params))?;
         let mut best: Option<Classification> = None;
         for c in &self.categories {

@@ -1,9 +1,11 @@
 use super::hyperparams::HkMeansParams;
 use super::tree::{Tree, TreeNode};
-use crate::cluster::kmeans::{algorithm::fit_subset, Seeding};
-use crate::cluster::{rng, Space};
+use crate::cluster::lloyd::fit_subset;
+use crate::cluster::Seeding;
 use crate::distance::DistanceMatrix;
+use crate::distance::Space;
 use crate::error::Result;
+use crate::rng::rng;
 use rand_chacha::ChaCha8Rng;
 
 /// Builds the whole tree once; any threshold is then a cut of it.

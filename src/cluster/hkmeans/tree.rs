@@ -61,7 +61,7 @@ impl Tree {
     /// the returned threshold. Fewer than k categories only when the tree
     /// has fewer than k leaves.
     pub fn cut_k(&self, k: usize) -> Result<Cut> {
-        crate::cluster::space::check_k(k, self.n)?;
+        crate::cluster::lloyd::check_k(k, self.n)?;
         // Depth from the root orders ties: a parent before its child.
         let mut depth = vec![0usize; self.nodes.len()];
         let mut stack = vec![0usize];

@@ -60,7 +60,7 @@ impl KMeansParams {
     }
     /// Check against the number of scans.
     pub fn check(&self, n: usize) -> Result<()> {
-        crate::cluster::space::check_k(self.k, n)?;
+        crate::cluster::lloyd::check_k(self.k, n)?;
         if self.max_iterations == 0 {
             return invalid("max_iterations must be at least 1");
         }

@@ -1,6 +1,6 @@
 //! k-means with Delta (paper Sec. IV-A) and three seedings.
 
-pub(crate) mod algorithm;
+mod algorithm;
 mod hyperparams;
 
 pub use algorithm::{KMeans, KMeansResult};

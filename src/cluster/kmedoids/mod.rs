@@ -1,10 +1,12 @@
 //! k-medoids (alternating, "Voronoi iteration") on the precomputed Delta
 //! matrix: centres are scans, so no mean of matrices is needed.
 
-use crate::cluster::kmeans::{algorithm::seeds, Seeding};
-use crate::cluster::{rng, Space};
+use crate::cluster::lloyd::seeds;
+use crate::cluster::Seeding;
 use crate::distance::DistanceMatrix;
+use crate::distance::Space;
 use crate::error::Result;
+use crate::rng::rng;
 
 pub struct KMedoids;
 
@@ -17,7 +19,7 @@ impl KMedoids {
         seed: u64,
         max_iterations: usize,
     ) -> Result<(Vec<i32>, Vec<usize>)> {
-        crate::cluster::space::check_k(k, matrix.n)?;
+        crate::cluster::lloyd::check_k(k, matrix.n)?;
         let n = matrix.n;
         let all: Vec<usize> = (0..n).collect();
         let mut medoids = seeds(space, &all, k, Seeding::PlusPlus, &mut rng(seed));
