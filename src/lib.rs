@@ -85,6 +85,7 @@
 
 pub mod cloud;
 pub mod cluster;
+pub mod collection;
 pub mod descriptor;
 pub mod distance;
 pub mod error;
@@ -97,6 +98,7 @@ pub mod sim;
 pub mod wasm;
 
 pub use cloud::{Format, PointCloud};
+pub use collection::Collection;
 pub use descriptor::{describe, Descriptor, DescriptorParams};
 pub use distance::{delta, delta_matrix, DistanceMatrix, DistanceOptions};
 pub use error::{Error, Result};

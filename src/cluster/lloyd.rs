@@ -8,13 +8,19 @@ use crate::error::{Error, Result};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 
-/// Reject parameters that cannot apply to n items.
-pub(crate) fn check_k(k: usize, n: usize) -> Result<()> {
+/// Reject k = 0 (a check of the parameters alone).
+pub(crate) fn check_k_positive(k: usize) -> Result<()> {
     if k == 0 {
         return Err(Error::InvalidParameter(
             "k must be at least 1, got 0".into(),
         ));
     }
+    Ok(())
+}
+
+/// Reject a k that cannot apply to n items.
+pub(crate) fn check_k(k: usize, n: usize) -> Result<()> {
+    check_k_positive(k)?;
     if k > n {
         return Err(Error::InvalidParameter(format!(
             "k = {k} is more than the {n} scans to cluster"

@@ -17,6 +17,50 @@ mod medoid;
 pub use crate::distance::{Centre, Space};
 pub use dbscan::{Dbscan, DbscanParams};
 pub use hkmeans::{HierarchicalKMeans, Tree, TreeNode};
-pub use kmeans::{KMeans, KMeansParams, Seeding};
-pub use kmedoids::KMedoids;
+pub use kmeans::{KMeans, KMeansParams, KMeansResult, Seeding};
+pub use kmedoids::{KMedoids, KMedoidsParams, KMedoidsResult};
 pub use medoid::medoids;
+
+/// Parameters checked once into the validated form an algorithm requires,
+/// in the manner of linfa's `ParamGuard`: `params.check()?` gives the
+/// validated parameters, and every `fit` takes either (a validated form
+/// checks as itself), so no algorithm runs on unchecked values. Checks
+/// that need the data (k against the number of scans) stay in `fit`.
+pub trait ParamGuard {
+    /// The validated form.
+    type Checked;
+    /// Check every field, returning the validated form or an
+    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) naming the field.
+    fn check(&self) -> crate::Result<Self::Checked>;
+}
+
+/// `ParamGuard` for a validated type (it checks as itself) and serde
+/// deserialisation through validation, for `$valid` wrapping `$params`.
+macro_rules! validated {
+    ($valid:ident, $params:ident) => {
+        impl $crate::cluster::ParamGuard for $valid {
+            type Checked = $valid;
+            fn check(&self) -> $crate::Result<$valid> {
+                Ok(self.clone())
+            }
+        }
+        impl TryFrom<$params> for $valid {
+            type Error = $crate::Error;
+            fn try_from(p: $params) -> $crate::Result<$valid> {
+                $crate::cluster::ParamGuard::check(&p)
+            }
+        }
+        impl From<$valid> for $params {
+            fn from(v: $valid) -> $params {
+                v.0
+            }
+        }
+        impl std::ops::Deref for $valid {
+            type Target = $params;
+            fn deref(&self) -> &$params {
+                &self.0
+            }
+        }
+    };
+}
+pub(crate) use validated;

@@ -1,6 +1,7 @@
-use super::hyperparams::HkMeansParams;
+use super::hyperparams::HkMeansValidParams;
 use super::tree::{Tree, TreeNode};
 use crate::cluster::lloyd::fit_subset;
+use crate::cluster::ParamGuard;
 use crate::cluster::Seeding;
 use crate::distance::DistanceMatrix;
 use crate::distance::Space;
@@ -16,7 +17,13 @@ pub const EXACT_DIAMETER_LIMIT: usize = 1500;
 
 impl HierarchicalKMeans {
     /// `matrix` is the Delta matrix of the same scans (for diameters).
-    pub fn fit(space: &Space, matrix: &DistanceMatrix, params: &HkMeansParams) -> Result<Tree> {
+    /// `params` is checked first (an [`HkMeansParams`](super::HkMeansParams)
+    /// or its validated form).
+    pub fn fit(
+        space: &Space,
+        matrix: &DistanceMatrix,
+        params: &impl ParamGuard<Checked = HkMeansValidParams>,
+    ) -> Result<Tree> {
         Self::fit_with(space, Some(matrix), params)
     }
 
@@ -24,22 +31,28 @@ impl HierarchicalKMeans {
     /// heights are exact diameters up to [`EXACT_DIAMETER_LIMIT`] scans, and
     /// above it twice the largest Delta to the node's centre (an upper bound
     /// of the diameter), never more than the parent's height.
-    pub fn fit_without_matrix(space: &Space, params: &HkMeansParams) -> Result<Tree> {
+    pub fn fit_without_matrix(
+        space: &Space,
+        params: &impl ParamGuard<Checked = HkMeansValidParams>,
+    ) -> Result<Tree> {
         Self::fit_with(space, None, params)
     }
 
     fn fit_with(
         space: &Space,
         matrix: Option<&DistanceMatrix>,
-        params: &HkMeansParams,
+        params: &impl ParamGuard<Checked = HkMeansValidParams>,
     ) -> Result<Tree> {
-        params.check(space.len())?;
+        let params = params.check()?;
+        if space.is_empty() {
+            return crate::error::invalid("no scans to cluster");
+        }
         let mut nodes = Vec::with_capacity(2 * space.len());
         let mut r = rng(params.seed);
         let all: Vec<usize> = (0..space.len()).collect();
         // An explicit stack instead of recursion: a chain-like data set would
         // otherwise recurse n deep.
-        build(space, matrix, params, all, &mut nodes, &mut r);
+        build(space, matrix, &params, all, &mut nodes, &mut r);
         Ok(Tree::new(nodes, space.len()))
     }
 }
@@ -106,7 +119,7 @@ type Pending = (Vec<usize>, Option<(usize, usize)>);
 fn build(
     space: &Space,
     matrix: Option<&DistanceMatrix>,
-    params: &HkMeansParams,
+    params: &HkMeansValidParams,
     root: Vec<usize>,
     nodes: &mut Vec<TreeNode>,
     r: &mut ChaCha8Rng,

@@ -1,5 +1,6 @@
-use super::hyperparams::KMeansParams;
+use super::hyperparams::KMeansValidParams;
 use crate::cluster::lloyd::fit_subset;
+use crate::cluster::ParamGuard;
 use crate::distance::Space;
 use crate::error::Result;
 use crate::rng::rng;
@@ -22,9 +23,15 @@ pub struct KMeansResult {
 pub struct KMeans;
 
 impl KMeans {
-    pub fn fit(space: &Space, params: &KMeansParams) -> Result<KMeansResult> {
+    /// Cluster the space's items; `params` is checked first (a
+    /// [`KMeansParams`](super::KMeansParams) or its validated form).
+    pub fn fit(
+        space: &Space,
+        params: &impl ParamGuard<Checked = KMeansValidParams>,
+    ) -> Result<KMeansResult> {
+        let params = params.check()?;
         let all: Vec<usize> = (0..space.len()).collect();
-        params.check(all.len())?;
+        crate::cluster::lloyd::check_k(params.k, all.len())?;
         let mut r = rng(params.seed);
         let (labels, seeds, iterations, converged, cost) = fit_subset(
             space,

@@ -1,3 +1,5 @@
+use crate::cluster::lloyd::check_k_positive;
+use crate::cluster::{validated, ParamGuard};
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
 
@@ -28,16 +30,41 @@ impl std::str::FromStr for Seeding {
     }
 }
 
-/// Validated k-means parameters.
+/// k-means parameters as given; [`ParamGuard::check`] turns them into the
+/// [`KMeansValidParams`] that [`KMeans::fit`](super::KMeans::fit) requires.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct KMeansParams {
+    /// Number of categories (at least 1, at most the number of scans).
     pub k: usize,
+    /// How the k initial centres are chosen.
     pub seeding: Seeding,
+    /// Seed of the RNG (random and k-means++ seedings).
     pub seed: u64,
+    /// Iteration cap (at least 1).
     pub max_iterations: usize,
 }
 
+/// k-means parameters that passed [`ParamGuard::check`]; a deserialised one
+/// is checked too. Read its fields through `Deref`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "KMeansParams", into = "KMeansParams")]
+pub struct KMeansValidParams(KMeansParams);
+
+validated!(KMeansValidParams, KMeansParams);
+
+impl ParamGuard for KMeansParams {
+    type Checked = KMeansValidParams;
+    fn check(&self) -> Result<KMeansValidParams> {
+        check_k_positive(self.k)?;
+        if self.max_iterations == 0 {
+            return invalid("max_iterations must be at least 1");
+        }
+        Ok(KMeansValidParams(self.clone()))
+    }
+}
+
 impl KMeansParams {
+    /// k categories, k-means++ seeding, seed 0, at most 100 iterations.
     pub fn new(k: usize) -> Self {
         KMeansParams {
             k,
@@ -46,24 +73,19 @@ impl KMeansParams {
             max_iterations: 100,
         }
     }
+    /// Set the seeding.
     pub fn seeding(mut self, s: Seeding) -> Self {
         self.seeding = s;
         self
     }
+    /// Set the RNG seed.
     pub fn seed(mut self, s: u64) -> Self {
         self.seed = s;
         self
     }
+    /// Set the iteration cap.
     pub fn max_iterations(mut self, m: usize) -> Self {
         self.max_iterations = m;
         self
-    }
-    /// Check against the number of scans.
-    pub fn check(&self, n: usize) -> Result<()> {
-        crate::cluster::lloyd::check_k(self.k, n)?;
-        if self.max_iterations == 0 {
-            return invalid("max_iterations must be at least 1");
-        }
-        Ok(())
     }
 }

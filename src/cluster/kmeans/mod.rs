@@ -4,4 +4,4 @@ mod algorithm;
 mod hyperparams;
 
 pub use algorithm::{KMeans, KMeansResult};
-pub use hyperparams::{KMeansParams, Seeding};
+pub use hyperparams::{KMeansParams, KMeansValidParams, Seeding};
