@@ -324,4 +324,39 @@ mod tests {
             assert!(e.contains("names: "), "{e}");
         }
     }
+
+    /// The matrix policy: above MATRIX_LIMIT scans hierarchical k-means++
+    /// builds its tree without the n x n matrix (two kinds of scan, split
+    /// at the root, each child's scans equal), and what needs the matrix is
+    /// refused with a message saying so.
+    #[test]
+    fn above_the_limit_no_matrix_is_built() {
+        let params = DescriptorParams::indoor();
+        let (rows, cols) = (params.rows(), params.cols());
+        let kind = |hot: usize| {
+            let mut m = vec![1u32; rows * cols];
+            m[hot] = 50;
+            Descriptor {
+                rows,
+                cols,
+                matrices: vec![m],
+                summary: Default::default(),
+            }
+        };
+        let n = MATRIX_LIMIT + 1;
+        let named = (0..n).map(|i| (format!("s{i}"), kind(if i % 2 == 0 { 0 } else { 5 })));
+        let mut set = Collection::from_parts(params, named).unwrap();
+        assert!(!set.uses_matrix());
+        let tree = set.hkmeans(&HkMeansParams::new(0)).unwrap();
+        assert!(set.cache.as_ref().is_some_and(|c| c.matrix.is_none()));
+        let cut = tree.cut_k(2).unwrap();
+        assert!((0..n).all(|i| cut.labels[i] == cut.labels[i % 2]));
+        assert_ne!(cut.labels[0], cut.labels[1]);
+        for e in [
+            set.kmedoids(&KMedoidsParams::new(2)).unwrap_err(),
+            set.dbscan(&DbscanParams::new(0.1, 2)).unwrap_err(),
+        ] {
+            assert!(e.to_string().contains("n x n Delta matrix"), "{e}");
+        }
+    }
 }

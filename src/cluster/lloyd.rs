@@ -2,11 +2,38 @@
 //! and Lloyd's iteration on a subset of the scans. No algorithm reaches
 //! into another's module for these.
 
-use super::Seeding;
 use crate::distance::{Centre, Space};
-use crate::error::{Error, Result};
+use crate::error::{invalid, Error, Result};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+
+/// How the k initial centres are chosen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Seeding {
+    /// k distinct scans drawn from the seeded RNG.
+    Random,
+    /// "Deterministic": cluster i starts at scan i * n / k.
+    Stride,
+    /// k-means++: each next seed drawn with probability proportional to the
+    /// squared Delta to the nearest seed so far.
+    PlusPlus,
+}
+
+impl std::str::FromStr for Seeding {
+    type Err = crate::Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "random" => Ok(Seeding::Random),
+            "stride" | "deterministic" => Ok(Seeding::Stride),
+            "plusplus" | "kmeans++" | "++" => Ok(Seeding::PlusPlus),
+            other => invalid(format!(
+                "unknown seeding {other:?} (random, stride, plusplus)"
+            )),
+        }
+    }
+}
 
 /// Reject k = 0 (a check of the parameters alone).
 pub(crate) fn check_k_positive(k: usize) -> Result<()> {

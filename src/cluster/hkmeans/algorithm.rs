@@ -155,6 +155,13 @@ fn build(
             // scans that make the diameter, so the tree always deepens.
             let d = |i: usize, j: usize| matrix.map_or_else(|| space.delta(i, j), |m| m.get(i, j));
             (left, right) = split(&members, |_, m| d(m, far_a) <= d(m, far_b));
+            if left.is_empty() || right.is_empty() {
+                // Not even those two tell the scans apart: a node over
+                // EXACT_DIAMETER_LIMIT scans that are all one (its height
+                // an upper bound above 0 only by rounding). A leaf, or the
+                // same node would be pushed again for ever.
+                continue;
+            }
         }
         // Push right first so the left child is built (and numbered) first.
         stack.push((right, Some((id, 1))));

@@ -1,34 +1,7 @@
-use crate::cluster::lloyd::check_k_positive;
+use crate::cluster::lloyd::{check_k_positive, Seeding};
 use crate::cluster::{validated, ParamGuard};
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
-
-/// How the k initial centres are chosen.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Seeding {
-    /// k distinct scans drawn from the seeded RNG.
-    Random,
-    /// "Deterministic": cluster i starts at scan i * n / k.
-    Stride,
-    /// k-means++: each next seed drawn with probability proportional to the
-    /// squared Delta to the nearest seed so far.
-    PlusPlus,
-}
-
-impl std::str::FromStr for Seeding {
-    type Err = crate::Error;
-    fn from_str(s: &str) -> Result<Self> {
-        match s {
-            "random" => Ok(Seeding::Random),
-            "stride" | "deterministic" => Ok(Seeding::Stride),
-            "plusplus" | "kmeans++" | "++" => Ok(Seeding::PlusPlus),
-            other => invalid(format!(
-                "unknown seeding {other:?} (random, stride, plusplus)"
-            )),
-        }
-    }
-}
 
 /// k-means parameters as given; [`ParamGuard::check`] turns them into the
 /// [`KMeansValidParams`] that [`KMeans::fit`](super::KMeans::fit) requires.

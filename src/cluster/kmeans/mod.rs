@@ -3,5 +3,6 @@
 mod algorithm;
 mod hyperparams;
 
+pub use crate::cluster::lloyd::Seeding;
 pub use algorithm::{KMeans, KMeansResult};
-pub use hyperparams::{KMeansParams, KMeansValidParams, Seeding};
+pub use hyperparams::{KMeansParams, KMeansValidParams};

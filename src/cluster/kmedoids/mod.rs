@@ -1,8 +1,8 @@
 //! k-medoids (alternating, "Voronoi iteration") on the precomputed Delta
 //! matrix: centres are scans, so no mean of matrices is needed.
 
-use crate::cluster::lloyd::{check_k, check_k_positive, seeds};
-use crate::cluster::{validated, ParamGuard, Seeding};
+use crate::cluster::lloyd::{check_k, check_k_positive, seeds, Seeding};
+use crate::cluster::{validated, ParamGuard};
 use crate::distance::{DistanceMatrix, Space};
 use crate::error::{invalid, Result};
 use crate::rng::rng;
