@@ -35,6 +35,14 @@ impl std::str::FromStr for Seeding {
     }
 }
 
+/// Reject an iteration cap of 0.
+pub(crate) fn check_iterations(max_iterations: usize) -> Result<()> {
+    if max_iterations == 0 {
+        return invalid("max_iterations must be at least 1");
+    }
+    Ok(())
+}
+
 /// Reject k = 0 (a check of the parameters alone).
 pub(crate) fn check_k_positive(k: usize) -> Result<()> {
     if k == 0 {

@@ -64,3 +64,19 @@ macro_rules! validated {
     };
 }
 pub(crate) use validated;
+
+/// Builder setters, one per `field: Type` with its doc line.
+macro_rules! setters {
+    ($params:ident { $($(#[$doc:meta])* $field:ident: $ty:ty),* $(,)? }) => {
+        impl $params {
+            $(
+                $(#[$doc])*
+                pub fn $field(mut self, v: $ty) -> Self {
+                    self.$field = v;
+                    self
+                }
+            )*
+        }
+    };
+}
+pub(crate) use setters;

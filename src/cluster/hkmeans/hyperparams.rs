@@ -1,5 +1,6 @@
-use crate::cluster::{validated, ParamGuard};
-use crate::error::{invalid, Result};
+use crate::cluster::lloyd::check_iterations;
+use crate::cluster::{setters, validated, ParamGuard};
+use crate::error::Result;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of hierarchical k-means++ as given; [`ParamGuard::check`]
@@ -38,19 +39,17 @@ impl HkMeansParams {
             ..Self::default()
         }
     }
-    /// Set the iteration cap of each split.
-    pub fn max_iterations(mut self, m: usize) -> Self {
-        self.max_iterations = m;
-        self
-    }
 }
 
 impl ParamGuard for HkMeansParams {
     type Checked = HkMeansValidParams;
     fn check(&self) -> Result<HkMeansValidParams> {
-        if self.max_iterations == 0 {
-            return invalid("max_iterations must be at least 1");
-        }
+        check_iterations(self.max_iterations)?;
         Ok(HkMeansValidParams(self.clone()))
     }
 }
+
+setters!(HkMeansParams {
+    /// Set the iteration cap of each split.
+    max_iterations: usize,
+});

@@ -1,6 +1,6 @@
-use crate::cluster::lloyd::{check_k_positive, Seeding};
-use crate::cluster::{validated, ParamGuard};
-use crate::error::{invalid, Result};
+use crate::cluster::lloyd::{check_iterations, check_k_positive, Seeding};
+use crate::cluster::{setters, validated, ParamGuard};
+use crate::error::Result;
 use serde::{Deserialize, Serialize};
 
 /// k-means parameters as given; [`ParamGuard::check`] turns them into the
@@ -29,9 +29,7 @@ impl ParamGuard for KMeansParams {
     type Checked = KMeansValidParams;
     fn check(&self) -> Result<KMeansValidParams> {
         check_k_positive(self.k)?;
-        if self.max_iterations == 0 {
-            return invalid("max_iterations must be at least 1");
-        }
+        check_iterations(self.max_iterations)?;
         Ok(KMeansValidParams(self.clone()))
     }
 }
@@ -46,19 +44,13 @@ impl KMeansParams {
             max_iterations: 100,
         }
     }
-    /// Set the seeding.
-    pub fn seeding(mut self, s: Seeding) -> Self {
-        self.seeding = s;
-        self
-    }
-    /// Set the RNG seed.
-    pub fn seed(mut self, s: u64) -> Self {
-        self.seed = s;
-        self
-    }
-    /// Set the iteration cap.
-    pub fn max_iterations(mut self, m: usize) -> Self {
-        self.max_iterations = m;
-        self
-    }
 }
+
+setters!(KMeansParams {
+    /// Set the seeding.
+    seeding: Seeding,
+    /// Set the RNG seed.
+    seed: u64,
+    /// Set the iteration cap.
+    max_iterations: usize,
+});

@@ -1,10 +1,10 @@
 //! k-medoids (alternating, "Voronoi iteration") on the precomputed Delta
 //! matrix: centres are scans, so no mean of matrices is needed.
 
-use crate::cluster::lloyd::{check_k, check_k_positive, seeds, Seeding};
-use crate::cluster::{validated, ParamGuard};
+use crate::cluster::lloyd::{check_iterations, check_k, check_k_positive, seeds, Seeding};
+use crate::cluster::{setters, validated, ParamGuard};
 use crate::distance::{DistanceMatrix, Space};
-use crate::error::{invalid, Result};
+use crate::error::Result;
 use crate::rng::rng;
 use serde::{Deserialize, Serialize};
 
@@ -37,28 +37,23 @@ impl KMedoidsParams {
             max_iterations: 100,
         }
     }
-    /// Set the RNG seed.
-    pub fn seed(mut self, s: u64) -> Self {
-        self.seed = s;
-        self
-    }
-    /// Set the iteration cap.
-    pub fn max_iterations(mut self, m: usize) -> Self {
-        self.max_iterations = m;
-        self
-    }
 }
 
 impl ParamGuard for KMedoidsParams {
     type Checked = KMedoidsValidParams;
     fn check(&self) -> Result<KMedoidsValidParams> {
         check_k_positive(self.k)?;
-        if self.max_iterations == 0 {
-            return invalid("max_iterations must be at least 1");
-        }
+        check_iterations(self.max_iterations)?;
         Ok(KMedoidsValidParams(self.clone()))
     }
 }
+
+setters!(KMedoidsParams {
+    /// Set the RNG seed.
+    seed: u64,
+    /// Set the iteration cap.
+    max_iterations: usize,
+});
 
 /// What k-medoids returns.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
