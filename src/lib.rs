@@ -5,11 +5,17 @@
 //!
 //! ```text
 //! io (PLY, PCD, KITTI .bin) -> descriptor (NDT grid, shapes, alignment, histogram)
-//!   -> distance (Delta) -> cluster (k-means, hierarchical k-means++, DBSCAN)
-//!   -> eval (confusion, ARI) ; sim (a lidar simulator for data with ground truth)
+//!   -> distance (prepared matrices, the metric kernel, Delta matrix, Space)
+//!   -> cluster (k-means, k-medoids, hierarchical k-means++, DBSCAN)
+//!   -> eval (confusion, ARI), model (named categories)
 //! ```
 //!
-//! The core knows nothing of the browser; `wasm` holds the JS boundary.
+//! Each stage imports only from the stages before it; `rng` (the one RNG)
+//! and `error` serve all of them, and `sim` (a lidar simulator for data
+//! with ground truth) stands beside. [`Collection`] holds a set of
+//! described scans and runs the stages on it: the CLI and the JS API
+//! (`wasm`, delegates only) both call it. The core knows nothing of the
+//! browser.
 //!
 //! ## Example
 //!
@@ -85,17 +91,20 @@
 
 pub mod cloud;
 pub mod cluster;
+pub mod collection;
 pub mod descriptor;
 pub mod distance;
 pub mod error;
 pub mod eval;
 pub mod io;
 pub mod model;
+pub mod rng;
 pub mod sim;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
 
 pub use cloud::{Format, PointCloud};
+pub use collection::Collection;
 pub use descriptor::{describe, Descriptor, DescriptorParams};
 pub use distance::{delta, delta_matrix, DistanceMatrix, DistanceOptions};
 pub use error::{Error, Result};

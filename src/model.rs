@@ -2,9 +2,10 @@
 //! classify a new scan (each category's centre in descriptor space), with
 //! the descriptor parameters it was made with. Saved and loaded as JSON.
 
-use crate::cluster::Space;
 use crate::descriptor::{Descriptor, DescriptorParams};
-use crate::distance::{matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared};
+use crate::distance::{
+    check_shape, matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared, Space,
+};
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 
@@ -28,14 +29,86 @@ pub struct Category {
     pub radius: f32,
 }
 
-/// Categories with names, ready to classify new scans.
+/// Categories with names, ready to classify new scans. Deserialisation
+/// goes through the checks of [`LabelledModel::from_json`], so a model read
+/// by serde is never malformed.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "ModelData")]
 pub struct LabelledModel {
+    /// [`MODEL_FORMAT`].
     pub format: String,
+    /// The descriptor parameters the model was made with.
     pub params: DescriptorParams,
+    /// Rows of every centre matrix.
     pub rows: usize,
+    /// Columns of every centre matrix.
     pub cols: usize,
+    /// The named categories (at least one).
     pub categories: Vec<Category>,
+}
+
+/// A model as read, before its checks.
+#[derive(Deserialize)]
+struct ModelData {
+    format: String,
+    params: DescriptorParams,
+    rows: usize,
+    cols: usize,
+    categories: Vec<Category>,
+}
+
+impl TryFrom<ModelData> for LabelledModel {
+    type Error = Error;
+    fn try_from(m: ModelData) -> Result<LabelledModel> {
+        if m.format != MODEL_FORMAT {
+            return Err(Error::Mismatch(format!(
+                "not a placecat model (format {:?}, expected {MODEL_FORMAT:?})",
+                m.format
+            )));
+        }
+        m.params.validate()?;
+        if m.rows != m.params.rows() || m.cols != m.params.cols() {
+            return Err(Error::Mismatch(
+                "the model's matrix shape does not match its parameters".into(),
+            ));
+        }
+        if m.categories.is_empty() {
+            return Err(Error::Mismatch("the model has no categories".into()));
+        }
+        for c in &m.categories {
+            if c.centre.len() != m.rows * m.cols
+                || !c.centre.iter().all(|v| v.is_finite())
+                || c.total.is_nan()
+                || c.total <= 0.0
+            {
+                return Err(Error::Mismatch(format!(
+                    "category {:?} has a malformed centre",
+                    c.name
+                )));
+            }
+        }
+        Ok(LabelledModel {
+            format: m.format,
+            params: m.params,
+            rows: m.rows,
+            cols: m.cols,
+            categories: m.categories,
+        })
+    }
+}
+
+/// A category without its centre: what a user sees of a model.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
+pub struct CategorySummary {
+    /// The category's name.
+    pub name: String,
+    /// The cluster label it came from.
+    pub label: i32,
+    /// Scans it was made from.
+    pub members: usize,
+    /// Largest Delta from its centre to a member.
+    pub radius: f32,
 }
 
 /// The answer for one scan.
@@ -96,7 +169,7 @@ impl LabelledModel {
             // contributes its candidate nearest to the mean.
             let mut centre = space.centre_of(members[0]);
             for _ in 0..3 {
-                centre = space.mean(&members, &centre).expect("members is not empty");
+                centre = space.mean(&members, &centre).unwrap_or(centre);
             }
             let radius = members
                 .iter()
@@ -125,41 +198,28 @@ impl LabelledModel {
         })
     }
 
-    /// Parse and check a model file.
+    /// Parse and check a model file (the checks' own message, not wrapped
+    /// in serde's).
     pub fn from_json(text: &str) -> Result<LabelledModel> {
-        let m: LabelledModel = serde_json::from_str(text)?;
-        if m.format != MODEL_FORMAT {
-            return Err(Error::Mismatch(format!(
-                "not a placecat model (format {:?}, expected {MODEL_FORMAT:?})",
-                m.format
-            )));
-        }
-        m.params.validate()?;
-        if m.rows != m.params.rows() || m.cols != m.params.cols() {
-            return Err(Error::Mismatch(
-                "the model's matrix shape does not match its parameters".into(),
-            ));
-        }
-        if m.categories.is_empty() {
-            return Err(Error::Mismatch("the model has no categories".into()));
-        }
-        for c in &m.categories {
-            if c.centre.len() != m.rows * m.cols
-                || !c.centre.iter().all(|v| v.is_finite())
-                || c.total.is_nan()
-                || c.total <= 0.0
-            {
-                return Err(Error::Mismatch(format!(
-                    "category {:?} has a malformed centre",
-                    c.name
-                )));
-            }
-        }
-        Ok(m)
+        LabelledModel::try_from(serde_json::from_str::<ModelData>(text)?)
     }
 
+    /// The model as JSON text (what [`LabelledModel::from_json`] reads).
     pub fn to_json(&self) -> Result<String> {
         Ok(serde_json::to_string(self)?)
+    }
+
+    /// Every category without its centre.
+    pub fn summaries(&self) -> Vec<CategorySummary> {
+        self.categories
+            .iter()
+            .map(|c| CategorySummary {
+                name: c.name.clone(),
+                label: c.label,
+                members: c.members,
+                radius: c.radius,
+            })
+            .collect()
     }
 
     /// Rename categories: (label, new name) pairs.
@@ -173,12 +233,7 @@ impl LabelledModel {
 
     /// The nearest category of a described scan.
     pub fn classify(&self, d: &Descriptor) -> Result<Classification> {
-        if d.rows != self.rows || d.cols != self.cols {
-            return Err(Error::Mismatch(format!(
-                "the scan was described with other parameters ({}x{}) than the model's ({}x{})",
-                d.rows, d.cols, self.rows, self.cols
-            )));
-        }
+        check_shape((d.rows, d.cols), (self.rows, self.cols))?;
         let p = Prepared::new(d, DistanceOptions::from(&self.params))?;
         let mut best: Option<Classification> = None;
         for c in &self.categories {
@@ -197,6 +252,6 @@ impl LabelledModel {
                 });
             }
         }
-        Ok(best.expect("a model has categories"))
+        best.ok_or_else(|| Error::Mismatch("the model has no categories".into()))
     }
 }

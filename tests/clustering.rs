@@ -238,7 +238,12 @@ fn kmedoids_and_clusters_are_partitions() {
     let opts = DistanceOptions::default();
     let space = Space::new(&ds, opts).unwrap();
     let m = space.matrix();
-    let (labels, medoids) = KMedoids::fit(&space, &m, 5, 1, 50).unwrap();
+    let KMedoidsResult { labels, medoids } = KMedoids::fit(
+        &space,
+        &m,
+        &KMedoidsParams::new(5).seed(1).max_iterations(50),
+    )
+    .unwrap();
     assert_eq!(medoids.len(), 5);
     for (c, &med) in medoids.iter().enumerate() {
         assert_eq!(labels[med], c as i32);

@@ -1,6 +1,6 @@
 //! The most central scan of each category (for thumbnails and names).
 
-use super::Space;
+use crate::distance::Space;
 use rand::seq::index::sample;
 
 /// For each category label >= 0 (ascending), the member with the smallest
@@ -11,7 +11,7 @@ pub fn medoids(space: &Space, labels: &[i32], max_sample: usize, seed: u64) -> V
     let mut ids: Vec<i32> = labels.iter().copied().filter(|&l| l >= 0).collect();
     ids.sort_unstable();
     ids.dedup();
-    let mut r = super::rng(seed);
+    let mut r = crate::rng::rng(seed);
     ids.into_iter()
         .map(|id| {
             let members: Vec<usize> = (0..labels.len()).filter(|&i| labels[i] == id).collect();

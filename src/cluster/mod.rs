@@ -1,5 +1,7 @@
 //! Clustering descriptors into categories (paper Sec. IV). One folder per
-//! algorithm (`hyperparams` with a validated builder, `algorithm`).
+//! algorithm (`hyperparams` with the parameters and their validated form,
+//! `algorithm`); what they share (seeding, Lloyd's iteration, the check of
+//! k) is in `lloyd`.
 //!
 //! Labels are `i32`: 0, 1, ... for categories, -1 for DBSCAN noise.
 
@@ -7,38 +9,74 @@ pub mod dbscan;
 pub mod hkmeans;
 pub mod kmeans;
 pub mod kmedoids;
+mod lloyd;
 mod medoid;
-mod space;
 
+/// The space clustering works in lives with the distance it measures
+/// (`crate::distance`); re-exported here, where most callers look for it.
+pub use crate::distance::{Centre, Space};
 pub use dbscan::{Dbscan, DbscanParams};
 pub use hkmeans::{HierarchicalKMeans, Tree, TreeNode};
-pub use kmeans::{KMeans, KMeansParams, Seeding};
-pub use kmedoids::KMedoids;
+pub use kmeans::{KMeans, KMeansParams, KMeansResult, Seeding};
+pub use kmedoids::{KMedoids, KMedoidsParams, KMedoidsResult};
 pub use medoid::medoids;
-pub use space::{Centre, Space};
 
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
-
-/// The one RNG of placecat: ChaCha8 is specified bit for bit, so the same
-/// seed gives the same labels natively and in wasm.
-pub fn rng(seed: u64) -> ChaCha8Rng {
-    ChaCha8Rng::seed_from_u64(seed)
+/// Parameters checked once into the validated form an algorithm requires,
+/// in the manner of linfa's `ParamGuard`: `params.check()?` gives the
+/// validated parameters, and every `fit` takes either (a validated form
+/// checks as itself), so no algorithm runs on unchecked values. Checks
+/// that need the data (k against the number of scans) stay in `fit`.
+pub trait ParamGuard {
+    /// The validated form.
+    type Checked;
+    /// Check every field, returning the validated form or an
+    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) naming the field.
+    fn check(&self) -> crate::Result<Self::Checked>;
 }
 
-/// Renumber labels 0.. in order of first appearance (noise stays -1), so
-/// that equal partitions print equal.
-pub fn canonical_labels(labels: &[i32]) -> Vec<i32> {
-    let mut map = std::collections::HashMap::new();
-    labels
-        .iter()
-        .map(|&l| {
-            if l < 0 {
-                -1
-            } else {
-                let next = map.len() as i32;
-                *map.entry(l).or_insert(next)
+/// `ParamGuard` for a validated type (it checks as itself) and serde
+/// deserialisation through validation, for `$valid` wrapping `$params`.
+macro_rules! validated {
+    ($valid:ident, $params:ident) => {
+        impl $crate::cluster::ParamGuard for $valid {
+            type Checked = $valid;
+            fn check(&self) -> $crate::Result<$valid> {
+                Ok(self.clone())
             }
-        })
-        .collect()
+        }
+        impl TryFrom<$params> for $valid {
+            type Error = $crate::Error;
+            fn try_from(p: $params) -> $crate::Result<$valid> {
+                $crate::cluster::ParamGuard::check(&p)
+            }
+        }
+        impl From<$valid> for $params {
+            fn from(v: $valid) -> $params {
+                v.0
+            }
+        }
+        impl std::ops::Deref for $valid {
+            type Target = $params;
+            fn deref(&self) -> &$params {
+                &self.0
+            }
+        }
+    };
 }
+pub(crate) use validated;
+
+/// Builder setters, one per `field: Type` with its doc line.
+macro_rules! setters {
+    ($params:ident { $($(#[$doc:meta])* $field:ident: $ty:ty),* $(,)? }) => {
+        impl $params {
+            $(
+                $(#[$doc])*
+                pub fn $field(mut self, v: $ty) -> Self {
+                    self.$field = v;
+                    self
+                }
+            )*
+        }
+    };
+}
+pub(crate) use setters;

@@ -9,7 +9,7 @@ pub mod ndt_grid;
 pub mod params;
 pub mod shape;
 
-pub use params::{Alignment, DescriptorParams, Metric, Normalisation};
+pub use params::{preset_names, Alignment, DescriptorParams, Metric, Normalisation, PRESETS};
 
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};

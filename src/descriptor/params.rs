@@ -83,6 +83,23 @@ pub struct DescriptorParams {
     pub min_voxels: usize,
 }
 
+/// A preset's constructor.
+pub type Preset = fn() -> DescriptorParams;
+
+/// Every parameter preset, by name: the one list. The CLI's help names
+/// them from here; a test holds the JS `Preset` type and the README to it.
+pub const PRESETS: [(&str, Preset); 4] = [
+    ("indoor", DescriptorParams::indoor),
+    ("outdoor", DescriptorParams::outdoor),
+    ("indoor_bands", DescriptorParams::indoor_bands),
+    ("perception_oru", DescriptorParams::perception_oru),
+];
+
+/// The names of [`PRESETS`], in order.
+pub fn preset_names() -> Vec<&'static str> {
+    PRESETS.iter().map(|(n, _)| *n).collect()
+}
+
 impl Default for DescriptorParams {
     fn default() -> Self {
         Self::indoor()
@@ -166,15 +183,13 @@ impl DescriptorParams {
         }
     }
 
-    /// A preset by name.
+    /// A preset by name (one of [`PRESETS`]).
     pub fn preset(name: &str) -> Result<Self> {
-        match name {
-            "indoor" => Ok(Self::indoor()),
-            "outdoor" => Ok(Self::outdoor()),
-            "indoor_bands" => Ok(Self::indoor_bands()),
-            "perception_oru" => Ok(Self::perception_oru()),
-            other => invalid(format!(
-                "unknown preset {other:?} (known: indoor, outdoor, indoor_bands, perception_oru)"
+        match PRESETS.iter().find(|(n, _)| *n == name) {
+            Some((_, make)) => Ok(make()),
+            None => invalid(format!(
+                "unknown preset {name:?} (known: {})",
+                preset_names().join(", ")
             )),
         }
     }
@@ -267,5 +282,30 @@ impl DescriptorParams {
             ));
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The preset table is the one list: each entry makes parameters that
+    /// carry its name, and the JS `Preset` type and the README's
+    /// `describe` synopsis (written out, as TypeScript and Markdown must
+    /// be) name exactly these.
+    #[test]
+    fn every_list_of_presets_is_the_table() {
+        let names = preset_names();
+        for (name, make) in PRESETS {
+            assert_eq!(make().preset, name);
+            assert_eq!(DescriptorParams::preset(name).unwrap(), make());
+        }
+        let quoted: Vec<String> = names.iter().map(|n| format!("\"{n}\"")).collect();
+        let ts = format!("export type Preset = {};", quoted.join(" | "));
+        assert!(include_str!("../wasm.rs").contains(&ts), "{ts}");
+        let md = format!("[--preset {}]", names.join("|"));
+        assert!(include_str!("../../README.md").contains(&md), "{md}");
+        let e = DescriptorParams::preset("attic").unwrap_err().to_string();
+        assert!(e.contains(&names.join(", ")), "{e}");
     }
 }

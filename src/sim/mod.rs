@@ -145,7 +145,7 @@ pub struct Simulation {
 impl Simulation {
     pub fn new(params: &SimParams) -> Result<Simulation> {
         params.validate()?;
-        let mut r = crate::cluster::rng(params.seed);
+        let mut r = crate::rng::rng(params.seed);
         let mut scenes_out = Vec::new();
         let mut shots = Vec::new();
         match params.scene {
@@ -218,7 +218,7 @@ impl Simulation {
     /// Cast scan i (deterministic: its own RNG stream from the seed).
     pub fn scan(&self, i: usize) -> SimScan {
         let (scene, pos, yaw, ref label) = self.shots[i];
-        let mut r = crate::cluster::rng(
+        let mut r = crate::rng::rng(
             self.params.seed ^ (0x9E37_79B9_7F4A_7C15u64.wrapping_mul(i as u64 + 1)),
         );
         let points = lidar::scan(&self.scenes[scene], pos, yaw, &self.lidar, &mut r);
@@ -250,7 +250,7 @@ pub fn reused_descriptors(
     let base = (0..sim.len())
         .map(|i| crate::describe(&sim.scan(i).points, params))
         .collect::<Result<Vec<_>>>()?;
-    let mut r = crate::cluster::rng(seed);
+    let mut r = crate::rng::rng(seed);
     Ok((0..n)
         .map(|i| {
             let mut d = base[i % base.len()].clone();

@@ -1,4 +1,5 @@
-use super::hyperparams::DbscanParams;
+use super::hyperparams::DbscanValidParams;
+use crate::cluster::ParamGuard;
 use crate::distance::DistanceMatrix;
 use crate::error::Result;
 
@@ -7,8 +8,13 @@ pub struct Dbscan;
 
 impl Dbscan {
     /// Labels 0.. in order of discovery (scan order), -1 for noise.
-    pub fn fit(matrix: &DistanceMatrix, params: &DbscanParams) -> Result<Vec<i32>> {
-        params.check()?;
+    /// `params` is checked first (a [`DbscanParams`](super::DbscanParams)
+    /// or its validated form).
+    pub fn fit(
+        matrix: &DistanceMatrix,
+        params: &impl ParamGuard<Checked = DbscanValidParams>,
+    ) -> Result<Vec<i32>> {
+        let params = params.check()?;
         let n = matrix.n;
         let neighbours = |i: usize| -> Vec<usize> {
             (0..n)

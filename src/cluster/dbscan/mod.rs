@@ -9,4 +9,4 @@ mod algorithm;
 mod hyperparams;
 
 pub use algorithm::Dbscan;
-pub use hyperparams::DbscanParams;
+pub use hyperparams::{DbscanParams, DbscanValidParams};

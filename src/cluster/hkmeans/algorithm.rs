@@ -1,9 +1,12 @@
-use super::hyperparams::HkMeansParams;
+use super::hyperparams::HkMeansValidParams;
 use super::tree::{Tree, TreeNode};
-use crate::cluster::kmeans::{algorithm::fit_subset, Seeding};
-use crate::cluster::{rng, Space};
+use crate::cluster::lloyd::fit_subset;
+use crate::cluster::ParamGuard;
+use crate::cluster::Seeding;
 use crate::distance::DistanceMatrix;
+use crate::distance::Space;
 use crate::error::Result;
+use crate::rng::rng;
 use rand_chacha::ChaCha8Rng;
 
 /// Builds the whole tree once; any threshold is then a cut of it.
@@ -14,7 +17,13 @@ pub const EXACT_DIAMETER_LIMIT: usize = 1500;
 
 impl HierarchicalKMeans {
     /// `matrix` is the Delta matrix of the same scans (for diameters).
-    pub fn fit(space: &Space, matrix: &DistanceMatrix, params: &HkMeansParams) -> Result<Tree> {
+    /// `params` is checked first (an [`HkMeansParams`](super::HkMeansParams)
+    /// or its validated form).
+    pub fn fit(
+        space: &Space,
+        matrix: &DistanceMatrix,
+        params: &impl ParamGuard<Checked = HkMeansValidParams>,
+    ) -> Result<Tree> {
         Self::fit_with(space, Some(matrix), params)
     }
 
@@ -22,22 +31,28 @@ impl HierarchicalKMeans {
     /// heights are exact diameters up to [`EXACT_DIAMETER_LIMIT`] scans, and
     /// above it twice the largest Delta to the node's centre (an upper bound
     /// of the diameter), never more than the parent's height.
-    pub fn fit_without_matrix(space: &Space, params: &HkMeansParams) -> Result<Tree> {
+    pub fn fit_without_matrix(
+        space: &Space,
+        params: &impl ParamGuard<Checked = HkMeansValidParams>,
+    ) -> Result<Tree> {
         Self::fit_with(space, None, params)
     }
 
     fn fit_with(
         space: &Space,
         matrix: Option<&DistanceMatrix>,
-        params: &HkMeansParams,
+        params: &impl ParamGuard<Checked = HkMeansValidParams>,
     ) -> Result<Tree> {
-        params.check(space.len())?;
+        let params = params.check()?;
+        if space.is_empty() {
+            return crate::error::invalid("no scans to cluster");
+        }
         let mut nodes = Vec::with_capacity(2 * space.len());
         let mut r = rng(params.seed);
         let all: Vec<usize> = (0..space.len()).collect();
         // An explicit stack instead of recursion: a chain-like data set would
         // otherwise recurse n deep.
-        build(space, matrix, params, all, &mut nodes, &mut r);
+        build(space, matrix, &params, all, &mut nodes, &mut r);
         Ok(Tree::new(nodes, space.len()))
     }
 }
@@ -104,7 +119,7 @@ type Pending = (Vec<usize>, Option<(usize, usize)>);
 fn build(
     space: &Space,
     matrix: Option<&DistanceMatrix>,
-    params: &HkMeansParams,
+    params: &HkMeansValidParams,
     root: Vec<usize>,
     nodes: &mut Vec<TreeNode>,
     r: &mut ChaCha8Rng,
@@ -140,6 +155,13 @@ fn build(
             // scans that make the diameter, so the tree always deepens.
             let d = |i: usize, j: usize| matrix.map_or_else(|| space.delta(i, j), |m| m.get(i, j));
             (left, right) = split(&members, |_, m| d(m, far_a) <= d(m, far_b));
+            if left.is_empty() || right.is_empty() {
+                // Not even those two tell the scans apart: a node over
+                // EXACT_DIAMETER_LIMIT scans that are all one (its height
+                // an upper bound above 0 only by rounding). A leaf, or the
+                // same node would be pushed again for ever.
+                continue;
+            }
         }
         // Push right first so the left child is built (and numbered) first.
         stack.push((right, Some((id, 1))));

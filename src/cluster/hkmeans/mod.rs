@@ -6,5 +6,5 @@ mod hyperparams;
 mod tree;
 
 pub use algorithm::{HierarchicalKMeans, EXACT_DIAMETER_LIMIT};
-pub use hyperparams::HkMeansParams;
+pub use hyperparams::{HkMeansParams, HkMeansValidParams};
 pub use tree::{Cut, Tree, TreeNode};

@@ -15,11 +15,34 @@ pub struct TreeNode {
     pub parent: Option<usize>,
 }
 
-/// A binary tree over n scans; node 0 is the root.
+/// A binary tree over n scans; node 0 is the root. Deserialisation goes
+/// through [`Tree::check`], so a tree read by serde is well formed.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "TreeData")]
 pub struct Tree {
+    /// Number of scans.
     pub n: usize,
+    /// The nodes, each after its parent.
     pub nodes: Vec<TreeNode>,
+}
+
+/// A tree as read, before its checks.
+#[derive(Deserialize)]
+struct TreeData {
+    n: usize,
+    nodes: Vec<TreeNode>,
+}
+
+impl TryFrom<TreeData> for Tree {
+    type Error = crate::Error;
+    fn try_from(t: TreeData) -> Result<Tree> {
+        let tree = Tree {
+            n: t.n,
+            nodes: t.nodes,
+        };
+        tree.check()?;
+        Ok(tree)
+    }
 }
 
 /// Flat categories from a cut.
@@ -46,6 +69,44 @@ impl Tree {
         Tree { n, nodes }
     }
 
+    /// Check the shape every method relies on: a root (node 0) holding the
+    /// n scans; every node with members below n, a height >= 0, and no
+    /// children or two, numbered after it and naming it as their parent;
+    /// every node but the root the child of one node.
+    pub fn check(&self) -> Result<()> {
+        let bad = |what: String| invalid(format!("malformed tree: {what}"));
+        match self.nodes.first() {
+            None => return bad("no nodes".into()),
+            Some(root) if root.parent.is_some() || root.members.len() != self.n => {
+                return bad(format!("the root does not hold the {} scans", self.n))
+            }
+            Some(_) => {}
+        }
+        let mut is_child = vec![false; self.nodes.len()];
+        for (id, node) in self.nodes.iter().enumerate() {
+            if node.members.is_empty() || node.members.iter().any(|&m| m >= self.n) {
+                return bad(format!("node {id} has no members or one beyond {}", self.n));
+            }
+            if !(node.height >= 0.0 && node.height.is_finite()) {
+                return bad(format!("node {id} has height {}", node.height));
+            }
+            if !matches!(node.children.len(), 0 | 2) {
+                return bad(format!("node {id} has {} children", node.children.len()));
+            }
+            for &c in &node.children {
+                let child = self.nodes.get(c).filter(|_| c > id && !is_child[c]);
+                if child.is_none_or(|child| child.parent != Some(id)) {
+                    return bad(format!("node {id} has a wrong child {c}"));
+                }
+                is_child[c] = true;
+            }
+        }
+        if let Some(orphan) = (1..self.nodes.len()).find(|&id| !is_child[id]) {
+            return bad(format!("node {orphan} is no node's child"));
+        }
+        Ok(())
+    }
+
     /// Categories at threshold t: nodes whose height <= t and whose parent's
     /// height > t (the root alone when its height <= t).
     pub fn cut(&self, t: f32) -> Result<Cut> {
@@ -61,7 +122,7 @@ impl Tree {
     /// the returned threshold. Fewer than k categories only when the tree
     /// has fewer than k leaves.
     pub fn cut_k(&self, k: usize) -> Result<Cut> {
-        crate::cluster::space::check_k(k, self.n)?;
+        crate::cluster::lloyd::check_k(k, self.n)?;
         // Depth from the root orders ties: a parent before its child.
         let mut depth = vec![0usize; self.nodes.len()];
         let mut stack = vec![0usize];
@@ -269,5 +330,26 @@ mod tests {
         assert_eq!(t.cut_k(2).unwrap().threshold, 2.0);
         assert_eq!(t.cut_k(3).unwrap().threshold, 1.0);
         assert!(t.cut_k(5).is_err(), "more categories than scans");
+    }
+
+    /// serde reads a tree through its checks: the tied tree round-trips;
+    /// a child pointing back at the root, a leaf with no members or a
+    /// member beyond n is refused with a message, not a panic later.
+    #[test]
+    fn a_deserialised_tree_is_checked() {
+        let t = tied();
+        let json = serde_json::to_string(&t).unwrap();
+        assert_eq!(serde_json::from_str::<Tree>(&json).unwrap(), t);
+        for (from, to) in [
+            ("\"children\":[5,6]", "\"children\":[0,6]"),
+            ("\"members\":[3],", "\"members\":[],"),
+            ("\"members\":[3],", "\"members\":[9],"),
+        ] {
+            assert!(json.contains(from), "{json}");
+            let err = serde_json::from_str::<Tree>(&json.replacen(from, to, 1))
+                .unwrap_err()
+                .to_string();
+            assert!(err.contains("malformed tree"), "{err}");
+        }
     }
 }

@@ -1,8 +1,9 @@
-use super::hyperparams::{KMeansParams, Seeding};
-use crate::cluster::{rng, Centre, Space};
+use super::hyperparams::KMeansValidParams;
+use crate::cluster::lloyd::fit_subset;
+use crate::cluster::ParamGuard;
+use crate::distance::Space;
 use crate::error::Result;
-use rand::Rng;
-use rand_chacha::ChaCha8Rng;
+use crate::rng::rng;
 use serde::{Deserialize, Serialize};
 
 /// The outcome of k-means.
@@ -22,9 +23,15 @@ pub struct KMeansResult {
 pub struct KMeans;
 
 impl KMeans {
-    pub fn fit(space: &Space, params: &KMeansParams) -> Result<KMeansResult> {
+    /// Cluster the space's items; `params` is checked first (a
+    /// [`KMeansParams`](super::KMeansParams) or its validated form).
+    pub fn fit(
+        space: &Space,
+        params: &impl ParamGuard<Checked = KMeansValidParams>,
+    ) -> Result<KMeansResult> {
+        let params = params.check()?;
         let all: Vec<usize> = (0..space.len()).collect();
-        params.check(all.len())?;
+        crate::cluster::lloyd::check_k(params.k, all.len())?;
         let mut r = rng(params.seed);
         let (labels, seeds, iterations, converged, cost) = fit_subset(
             space,
@@ -42,111 +49,4 @@ impl KMeans {
             cost,
         })
     }
-}
-
-/// Pick the seeds among `members` (positions into `members`).
-pub(crate) fn seeds(
-    space: &Space,
-    members: &[usize],
-    k: usize,
-    seeding: Seeding,
-    r: &mut ChaCha8Rng,
-) -> Vec<usize> {
-    let n = members.len();
-    match seeding {
-        Seeding::Stride => (0..k).map(|i| i * n / k).collect(),
-        Seeding::Random => rand::seq::index::sample(r, n, k).into_vec(),
-        Seeding::PlusPlus => {
-            let mut chosen = vec![r.random_range(0..n)];
-            let mut nearest: Vec<f64> = (0..n)
-                .map(|i| space.delta(members[i], members[chosen[0]]) as f64)
-                .collect();
-            while chosen.len() < k {
-                let weights: f64 = nearest.iter().map(|d| d * d).sum();
-                let next = if weights > 0.0 {
-                    let mut x = r.random::<f64>() * weights;
-                    let mut pick = n - 1;
-                    for (i, d) in nearest.iter().enumerate() {
-                        x -= d * d;
-                        if x < 0.0 && d * d > 0.0 {
-                            pick = i;
-                            break;
-                        }
-                    }
-                    pick
-                } else {
-                    // All remaining scans coincide with a seed: take the
-                    // first one not chosen yet.
-                    (0..n).find(|i| !chosen.contains(i)).unwrap_or(0)
-                };
-                chosen.push(next);
-                for i in 0..n {
-                    nearest[i] = nearest[i].min(space.delta(members[i], members[next]) as f64);
-                }
-            }
-            chosen
-        }
-    }
-}
-
-/// k-means on a subset; labels are per position in `members`.
-pub(crate) fn fit_subset(
-    space: &Space,
-    members: &[usize],
-    k: usize,
-    seeding: Seeding,
-    max_iterations: usize,
-    r: &mut ChaCha8Rng,
-) -> (Vec<usize>, Vec<usize>, usize, bool, f64) {
-    let seed_pos = seeds(space, members, k, seeding, r);
-    let mut centres: Vec<Centre> = seed_pos
-        .iter()
-        .map(|&s| space.centre_of(members[s]))
-        .collect();
-    let mut labels = vec![usize::MAX; members.len()];
-    let mut converged = false;
-    let mut iterations = 0;
-    let mut cost = 0.0;
-    while iterations < max_iterations {
-        iterations += 1;
-        let mut changed = false;
-        cost = 0.0;
-        let mut dist = vec![0f32; members.len()];
-        for (p, &i) in members.iter().enumerate() {
-            let (best, d) = centres
-                .iter()
-                .enumerate()
-                .map(|(c, centre)| (c, space.to_centre(centre, i).0))
-                .fold((0, f32::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-            dist[p] = d;
-            cost += d as f64;
-            if labels[p] != best {
-                labels[p] = best;
-                changed = true;
-            }
-        }
-        if !changed {
-            converged = true;
-            break;
-        }
-        for (c, centre) in centres.iter_mut().enumerate() {
-            let in_c: Vec<usize> = (0..members.len())
-                .filter(|&p| labels[p] == c)
-                .map(|p| members[p])
-                .collect();
-            match space.mean(&in_c, centre) {
-                Some(m) => *centre = m,
-                None => {
-                    // An empty cluster restarts at the scan farthest from its
-                    // centre, so k clusters stay k.
-                    let far = (0..members.len())
-                        .max_by(|&a, &b| dist[a].total_cmp(&dist[b]))
-                        .unwrap_or(0);
-                    dist[far] = 0.0;
-                    *centre = space.centre_of(members[far]);
-                }
-            }
-        }
-    }
-    (labels, seed_pos, iterations, converged, cost)
 }

@@ -1,43 +1,41 @@
-use crate::error::{invalid, Result};
+use crate::cluster::lloyd::{check_iterations, check_k_positive, Seeding};
+use crate::cluster::{setters, validated, ParamGuard};
+use crate::error::Result;
 use serde::{Deserialize, Serialize};
 
-/// How the k initial centres are chosen.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Seeding {
-    /// k distinct scans drawn from the seeded RNG.
-    Random,
-    /// "Deterministic": cluster i starts at scan i * n / k.
-    Stride,
-    /// k-means++: each next seed drawn with probability proportional to the
-    /// squared Delta to the nearest seed so far.
-    PlusPlus,
-}
-
-impl std::str::FromStr for Seeding {
-    type Err = crate::Error;
-    fn from_str(s: &str) -> Result<Self> {
-        match s {
-            "random" => Ok(Seeding::Random),
-            "stride" | "deterministic" => Ok(Seeding::Stride),
-            "plusplus" | "kmeans++" | "++" => Ok(Seeding::PlusPlus),
-            other => invalid(format!(
-                "unknown seeding {other:?} (random, stride, plusplus)"
-            )),
-        }
-    }
-}
-
-/// Validated k-means parameters.
+/// k-means parameters as given; [`ParamGuard::check`] turns them into the
+/// [`KMeansValidParams`] that [`KMeans::fit`](super::KMeans::fit) requires.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct KMeansParams {
+    /// Number of categories (at least 1, at most the number of scans).
     pub k: usize,
+    /// How the k initial centres are chosen.
     pub seeding: Seeding,
+    /// Seed of the RNG (random and k-means++ seedings).
     pub seed: u64,
+    /// Iteration cap (at least 1).
     pub max_iterations: usize,
 }
 
+/// k-means parameters that passed [`ParamGuard::check`]; a deserialised one
+/// is checked too. Read its fields through `Deref`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(try_from = "KMeansParams", into = "KMeansParams")]
+pub struct KMeansValidParams(KMeansParams);
+
+validated!(KMeansValidParams, KMeansParams);
+
+impl ParamGuard for KMeansParams {
+    type Checked = KMeansValidParams;
+    fn check(&self) -> Result<KMeansValidParams> {
+        check_k_positive(self.k)?;
+        check_iterations(self.max_iterations)?;
+        Ok(KMeansValidParams(self.clone()))
+    }
+}
+
 impl KMeansParams {
+    /// k categories, k-means++ seeding, seed 0, at most 100 iterations.
     pub fn new(k: usize) -> Self {
         KMeansParams {
             k,
@@ -46,24 +44,13 @@ impl KMeansParams {
             max_iterations: 100,
         }
     }
-    pub fn seeding(mut self, s: Seeding) -> Self {
-        self.seeding = s;
-        self
-    }
-    pub fn seed(mut self, s: u64) -> Self {
-        self.seed = s;
-        self
-    }
-    pub fn max_iterations(mut self, m: usize) -> Self {
-        self.max_iterations = m;
-        self
-    }
-    /// Check against the number of scans.
-    pub fn check(&self, n: usize) -> Result<()> {
-        crate::cluster::space::check_k(self.k, n)?;
-        if self.max_iterations == 0 {
-            return invalid("max_iterations must be at least 1");
-        }
-        Ok(())
-    }
 }
+
+setters!(KMeansParams {
+    /// Set the seeding.
+    seeding: Seeding,
+    /// Set the RNG seed.
+    seed: u64,
+    /// Set the iteration cap.
+    max_iterations: usize,
+});

@@ -1,7 +1,8 @@
 //! k-means with Delta (paper Sec. IV-A) and three seedings.
 
-pub(crate) mod algorithm;
+mod algorithm;
 mod hyperparams;
 
+pub use crate::cluster::lloyd::Seeding;
 pub use algorithm::{KMeans, KMeansResult};
-pub use hyperparams::{KMeansParams, Seeding};
+pub use hyperparams::{KMeansParams, KMeansValidParams};

@@ -1,14 +1,13 @@
 //! `placecat cluster`, `placecat evaluate`, `placecat sweep`, `placecat simulate`.
 
-use super::describe::{csv_cells, DescriptorSet};
+use super::describe::{csv_cells, DescriptorsFile};
 use super::progress;
 use placecat::cluster::{
-    hkmeans::HkMeansParams, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams,
-    KMedoids, Seeding, Space,
+    hkmeans::HkMeansParams, DbscanParams, KMeansParams, KMedoidsParams, Seeding,
 };
 use placecat::io::write::{self, PlyEncoding};
 use placecat::sim::{SceneKind, SimParams, Simulation};
-use placecat::{DistanceOptions, Error, Result};
+use placecat::{Error, Result};
 use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -47,20 +46,20 @@ fn need<T>(v: Option<T>, flag: &str, method: &str) -> Result<T> {
 }
 
 pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<ExitCode> {
-    let (params, files, ds) = DescriptorSet::load(descriptors)?.into_parts();
-    if ds.is_empty() {
+    let mut set = DescriptorsFile::load(descriptors)?;
+    if set.is_empty() {
         return Err(Error::InvalidParameter(format!(
             "{}: no described files",
             descriptors.display()
         )));
     }
-    let space = Space::new(&ds, DistanceOptions::from(&params))?;
+    let files = set.names().to_vec();
     let mut out = json!({ "files": files, "method": a.method });
     match a.method.as_str() {
         "kmeans" => {
             let k = need(a.k, "--k", "kmeans")?;
             let seeding: Seeding = a.seeding.parse()?;
-            let r = KMeans::fit(&space, &KMeansParams::new(k).seeding(seeding).seed(a.seed))?;
+            let r = set.kmeans(&KMeansParams::new(k).seeding(seeding).seed(a.seed))?;
             out["labels"] = json!(r.labels);
             out["k"] = json!(k);
             out["seeding"] = json!(seeding);
@@ -71,14 +70,13 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
         }
         "kmedoids" => {
             let k = need(a.k, "--k", "kmedoids")?;
-            let m = space.matrix();
-            let (labels, medoids) = KMedoids::fit(&space, &m, k, a.seed, 100)?;
-            out["labels"] = json!(labels);
-            out["medoids"] = json!(medoids.iter().map(|&i| &files[i]).collect::<Vec<_>>());
+            let r = set.kmedoids(&KMedoidsParams::new(k).seed(a.seed))?;
+            out["labels"] = json!(r.labels);
+            out["medoids"] = json!(r.medoids.iter().map(|&i| &files[i]).collect::<Vec<_>>());
         }
         "hkmeans" => {
-            let m = space.matrix();
-            let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(a.seed))?;
+            // Above the matrix limit the tree is built without the matrix.
+            let tree = set.hkmeans(&HkMeansParams::new(a.seed))?;
             let cut = match (a.threshold, a.categories) {
                 (Some(t), None) => tree.cut(t)?,
                 (None, Some(k)) => tree.cut_k(k)?,
@@ -101,8 +99,7 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
         "dbscan" => {
             let eps = need(a.eps, "--eps", "dbscan")?;
             let c = need(a.min_points, "--min-points", "dbscan")?;
-            let m = space.matrix();
-            let labels = Dbscan::fit(&m, &DbscanParams::new(eps, c))?;
+            let labels = set.dbscan(&DbscanParams::new(eps, c))?;
             out["noise"] = json!(labels.iter().filter(|&&l| l < 0).count());
             out["labels"] = json!(labels);
             out["eps"] = json!(eps);
@@ -216,26 +213,25 @@ pub struct SweepArgs {
 /// `epsilon,min_points,clusters,inlier_ratio,ari,score` (the last two empty
 /// without `--truth`); the best S goes to stderr.
 pub fn sweep(descriptors: &Path, a: &SweepArgs, output: Option<&Path>) -> Result<ExitCode> {
-    let (params, files, ds) = DescriptorSet::load(descriptors)?.into_parts();
+    let mut set = DescriptorsFile::load(descriptors)?;
     let truth = a
         .truth
         .as_deref()
-        .map(|t| truth_for(&files, t))
+        .map(|t| truth_for(set.names(), t))
         .transpose()?;
-    if ds.len() < 2 {
+    if set.len() < 2 {
         return Err(Error::InvalidParameter(format!(
             "{}: a sweep needs at least two described files, it has {}",
             descriptors.display(),
-            ds.len()
+            set.len()
         )));
     }
-    let m = Space::new(&ds, DistanceOptions::from(&params))?.matrix();
     let eps = if a.eps.is_empty() {
-        placecat::eval::epsilon_grid(&m)
+        set.epsilon_grid()?
     } else {
         a.eps.clone()
     };
-    let points = placecat::eval::dbscan_sweep(&m, truth.as_deref(), &eps, &a.min_points)?;
+    let points = set.dbscan_sweep(truth.as_deref(), &eps, &a.min_points)?;
     let cell = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.4}"));
     let mut out = String::from("epsilon,min_points,clusters,inlier_ratio,ari,score\n");
     for p in &points {

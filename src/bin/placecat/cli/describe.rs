@@ -1,9 +1,10 @@
 //! `placecat describe` and `placecat distances`.
 
 use super::progress;
+use placecat::collection::merge_params;
 use placecat::descriptor::DescriptorParams;
 use placecat::io::{is_scan_name, read_path, ReadLimits};
-use placecat::{Descriptor, Error, Result};
+use placecat::{Collection, Descriptor, Error, Result};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -24,47 +25,28 @@ pub struct FileError {
     pub error: String,
 }
 
-/// The whole OUT.json of `describe`.
+/// The whole OUT.json of `describe`: the file form of a
+/// [`Collection`].
 #[derive(Serialize, Deserialize)]
-pub struct DescriptorSet {
+pub struct DescriptorsFile {
     pub params: DescriptorParams,
     pub files: Vec<DescribedFile>,
     #[serde(default)]
     pub errors: Vec<FileError>,
 }
 
-impl DescriptorSet {
-    /// Read and check a set: its parameters, and every descriptor against
-    /// them, so a hand-edited or truncated file is refused here, naming it
-    /// and the scan, not later in a model that cannot be loaded.
-    pub fn load(path: &Path) -> Result<DescriptorSet> {
+impl DescriptorsFile {
+    /// Read a described set as a collection, checking its parameters and
+    /// every descriptor against them, so a hand-edited or truncated file is
+    /// refused here, naming it and the scan, not later in a model that
+    /// cannot be loaded.
+    pub fn load(path: &Path) -> Result<Collection> {
         let name = path.display().to_string();
         let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&name))?;
-        let set: DescriptorSet =
+        let file: DescriptorsFile =
             serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
-        set.check().map_err(|e| e.in_file(&name))?;
-        Ok(set)
-    }
-
-    fn check(&self) -> Result<()> {
-        self.params.validate()?;
-        for f in &self.files {
-            f.descriptor
-                .validate_for(&self.params)
-                .map_err(|e| e.in_file(&f.name))?;
-        }
-        Ok(())
-    }
-
-    /// The parameters, file names and descriptors, moved out (a large set's
-    /// descriptors are not copied to be clustered).
-    pub fn into_parts(self) -> (DescriptorParams, Vec<String>, Vec<Descriptor>) {
-        let (names, descriptors) = self
-            .files
-            .into_iter()
-            .map(|f| (f.name, f.descriptor))
-            .unzip();
-        (self.params, names, descriptors)
+        let named = file.files.into_iter().map(|f| (f.name, f.descriptor));
+        Collection::from_parts(file.params, named).map_err(|e| e.in_file(&name))
     }
 }
 
@@ -87,30 +69,16 @@ pub fn expand(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
+/// The preset's parameters with the fields of the `--params` file over them.
 fn load_params(preset: &str, params: Option<&Path>) -> Result<DescriptorParams> {
-    let base = DescriptorParams::preset(preset)?;
     let Some(path) = params else {
-        return Ok(base);
+        return merge_params(Some(preset), None);
     };
     let name = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&name))?;
-    // Fields the file gives override the preset's.
-    let mut merged = serde_json::to_value(&base)?;
     let over: serde_json::Value =
         serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
-    let Some(obj) = over.as_object() else {
-        return Err(
-            Error::InvalidParameter("the params file must hold a JSON object".into())
-                .in_file(&name),
-        );
-    };
-    for (k, v) in obj {
-        merged[k] = v.clone();
-    }
-    let p: DescriptorParams =
-        serde_json::from_value(merged).map_err(|e| Error::from(e).in_file(&name))?;
-    p.validate().map_err(|e| e.in_file(&name))?;
-    Ok(p)
+    merge_params(Some(preset), Some(&over)).map_err(|e| e.in_file(&name))
 }
 
 pub fn run(
@@ -121,9 +89,8 @@ pub fn run(
     limits: &ReadLimits,
 ) -> Result<ExitCode> {
     let params = load_params(preset, params)?;
-    params.validate()?;
     let files = expand(inputs)?;
-    let mut set = DescriptorSet {
+    let mut set = DescriptorsFile {
         files: Vec::new(),
         errors: Vec::new(),
         params,
@@ -227,9 +194,10 @@ pub fn csv_cells(line: &str) -> Option<Vec<String>> {
 }
 
 pub fn distances(descriptors: &Path, output: Option<&Path>) -> Result<ExitCode> {
-    let (params, names, ds) = DescriptorSet::load(descriptors)?.into_parts();
-    let m = placecat::delta_matrix(&ds, (&params).into())?;
-    let names: Vec<String> = names.iter().map(|n| csv_cell(n)).collect();
+    // The matrix is the output here, so it is built at any size.
+    let set = DescriptorsFile::load(descriptors)?;
+    let m = placecat::delta_matrix(set.descriptors(), set.params().into())?;
+    let names: Vec<String> = set.names().iter().map(|n| csv_cell(n)).collect();
     let mut out = String::from("file");
     for n in &names {
         out.push(',');

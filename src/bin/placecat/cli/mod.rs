@@ -10,6 +10,14 @@ use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+/// `--preset`'s help, naming every preset of the table.
+fn preset_help() -> String {
+    format!(
+        "Parameter preset: {}.",
+        placecat::descriptor::preset_names().join(", ")
+    )
+}
+
 #[derive(Parser)]
 #[command(
     name = "placecat",
@@ -32,8 +40,8 @@ enum Command {
     },
     /// Compute the NDT-histogram descriptor of every scan.
     Describe {
-        /// Parameter preset: indoor, outdoor, indoor_bands, perception_oru.
-        #[arg(long, default_value = "indoor")]
+        /// Parameter preset (the names come from the one preset table).
+        #[arg(long, default_value = "indoor", help = preset_help())]
         preset: String,
         /// JSON file of parameters (fields not given keep the preset's values).
         #[arg(long)]

@@ -3,7 +3,7 @@
 //! (also for models exported from the page).
 
 use super::cluster::read_truth;
-use super::describe::{csv_cell, describe_files, expand, DescriptorSet};
+use super::describe::{csv_cell, describe_files, expand, DescriptorsFile};
 use placecat::io::ReadLimits;
 use placecat::model::LabelledModel;
 use placecat::{Error, Result};
@@ -15,7 +15,8 @@ use std::process::ExitCode;
 /// One category per distinct name in `names` (`file,name` rows: the page's
 /// "Export CSV", or a labels.csv); scans it does not name are left out.
 pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode> {
-    let (params, files, ds) = DescriptorSet::load(descriptors)?.into_parts();
+    let set = DescriptorsFile::load(descriptors)?;
+    let files = set.names();
     let table: HashMap<String, String> = read_truth(names)?.into_iter().collect();
     let mut kinds: Vec<String> = Vec::new();
     let labels: Vec<i32> = files
@@ -40,7 +41,7 @@ pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode
         .in_file(names.display().to_string()));
     }
     let named: Vec<(i32, String)> = (0..).zip(kinds.iter().cloned()).collect();
-    let model = LabelledModel::build(&params, &ds, &labels, &named)?;
+    let model = set.build_model(&labels, &named)?;
     super::write_out(Some(output), &model.to_json()?)?;
     let unnamed = labels.iter().filter(|&&l| l < 0).count();
     eprintln!(

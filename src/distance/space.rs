@@ -1,9 +1,12 @@
 //! The space clustering works in: prepared descriptors, their metric, and
 //! centres (element-wise means of normalised matrices, DESIGN.md Sec. 3).
 
+use super::{
+    delta_prepared, matrix_distance, prepare_all, size_factor, DistanceMatrix, DistanceOptions,
+    Prepared,
+};
 use crate::descriptor::{Descriptor, Metric};
-use crate::distance::{matrix_distance, prepare_all, size_factor, DistanceOptions, Prepared};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// Prepared descriptors and the metric to compare them with.
 #[derive(Debug, Clone)]
@@ -46,13 +49,13 @@ impl Space {
 
     /// The full Delta matrix of the items (parallel natively), from the
     /// descriptors already prepared here.
-    pub fn matrix(&self) -> crate::distance::DistanceMatrix {
-        crate::distance::DistanceMatrix::from_fn(self.len(), |i, j| self.delta(i, j))
+    pub fn matrix(&self) -> DistanceMatrix {
+        DistanceMatrix::from_fn(self.len(), |i, j| self.delta(i, j))
     }
 
     /// Delta between items i and j.
     pub fn delta(&self, i: usize, j: usize) -> f32 {
-        crate::distance::delta_prepared(&self.items[i], &self.items[j], self.metric)
+        delta_prepared(&self.items[i], &self.items[j], self.metric)
     }
 
     /// Delta from a centre to item i, and the candidate of i that attains it.
@@ -99,19 +102,4 @@ impl Space {
             total: (total / members.len() as f64) as f32,
         })
     }
-}
-
-/// Reject parameters that cannot apply to n items.
-pub(crate) fn check_k(k: usize, n: usize) -> Result<()> {
-    if k == 0 {
-        return Err(Error::InvalidParameter(
-            "k must be at least 1, got 0".into(),
-        ));
-    }
-    if k > n {
-        return Err(Error::InvalidParameter(format!(
-            "k = {k} is more than the {n} scans to cluster"
-        )));
-    }
-    Ok(())
 }

@@ -1,0 +1,172 @@
+//! What k-means, k-medoids and hierarchical k-means++ share: picking seeds
+//! and Lloyd's iteration on a subset of the scans. No algorithm reaches
+//! into another's module for these.
+
+use crate::distance::{Centre, Space};
+use crate::error::{invalid, Error, Result};
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+
+/// How the k initial centres are chosen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Seeding {
+    /// k distinct scans drawn from the seeded RNG.
+    Random,
+    /// "Deterministic": cluster i starts at scan i * n / k.
+    Stride,
+    /// k-means++: each next seed drawn with probability proportional to the
+    /// squared Delta to the nearest seed so far.
+    PlusPlus,
+}
+
+impl std::str::FromStr for Seeding {
+    type Err = crate::Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "random" => Ok(Seeding::Random),
+            "stride" | "deterministic" => Ok(Seeding::Stride),
+            "plusplus" | "kmeans++" | "++" => Ok(Seeding::PlusPlus),
+            other => invalid(format!(
+                "unknown seeding {other:?} (random, stride, plusplus)"
+            )),
+        }
+    }
+}
+
+/// Reject an iteration cap of 0.
+pub(crate) fn check_iterations(max_iterations: usize) -> Result<()> {
+    if max_iterations == 0 {
+        return invalid("max_iterations must be at least 1");
+    }
+    Ok(())
+}
+
+/// Reject k = 0 (a check of the parameters alone).
+pub(crate) fn check_k_positive(k: usize) -> Result<()> {
+    if k == 0 {
+        return Err(Error::InvalidParameter(
+            "k must be at least 1, got 0".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// Reject a k that cannot apply to n items.
+pub(crate) fn check_k(k: usize, n: usize) -> Result<()> {
+    check_k_positive(k)?;
+    if k > n {
+        return Err(Error::InvalidParameter(format!(
+            "k = {k} is more than the {n} scans to cluster"
+        )));
+    }
+    Ok(())
+}
+
+/// Pick the seeds among `members` (positions into `members`).
+pub(crate) fn seeds(
+    space: &Space,
+    members: &[usize],
+    k: usize,
+    seeding: Seeding,
+    r: &mut ChaCha8Rng,
+) -> Vec<usize> {
+    let n = members.len();
+    match seeding {
+        Seeding::Stride => (0..k).map(|i| i * n / k).collect(),
+        Seeding::Random => rand::seq::index::sample(r, n, k).into_vec(),
+        Seeding::PlusPlus => {
+            let mut chosen = vec![r.random_range(0..n)];
+            let mut nearest: Vec<f64> = (0..n)
+                .map(|i| space.delta(members[i], members[chosen[0]]) as f64)
+                .collect();
+            while chosen.len() < k {
+                let weights: f64 = nearest.iter().map(|d| d * d).sum();
+                let next = if weights > 0.0 {
+                    let mut x = r.random::<f64>() * weights;
+                    let mut pick = n - 1;
+                    for (i, d) in nearest.iter().enumerate() {
+                        x -= d * d;
+                        if x < 0.0 && d * d > 0.0 {
+                            pick = i;
+                            break;
+                        }
+                    }
+                    pick
+                } else {
+                    // All remaining scans coincide with a seed: take the
+                    // first one not chosen yet.
+                    (0..n).find(|i| !chosen.contains(i)).unwrap_or(0)
+                };
+                chosen.push(next);
+                for i in 0..n {
+                    nearest[i] = nearest[i].min(space.delta(members[i], members[next]) as f64);
+                }
+            }
+            chosen
+        }
+    }
+}
+
+/// k-means on a subset; labels are per position in `members`.
+pub(crate) fn fit_subset(
+    space: &Space,
+    members: &[usize],
+    k: usize,
+    seeding: Seeding,
+    max_iterations: usize,
+    r: &mut ChaCha8Rng,
+) -> (Vec<usize>, Vec<usize>, usize, bool, f64) {
+    let seed_pos = seeds(space, members, k, seeding, r);
+    let mut centres: Vec<Centre> = seed_pos
+        .iter()
+        .map(|&s| space.centre_of(members[s]))
+        .collect();
+    let mut labels = vec![usize::MAX; members.len()];
+    let mut converged = false;
+    let mut iterations = 0;
+    let mut cost = 0.0;
+    while iterations < max_iterations {
+        iterations += 1;
+        let mut changed = false;
+        cost = 0.0;
+        let mut dist = vec![0f32; members.len()];
+        for (p, &i) in members.iter().enumerate() {
+            let (best, d) = centres
+                .iter()
+                .enumerate()
+                .map(|(c, centre)| (c, space.to_centre(centre, i).0))
+                .fold((0, f32::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+            dist[p] = d;
+            cost += d as f64;
+            if labels[p] != best {
+                labels[p] = best;
+                changed = true;
+            }
+        }
+        if !changed {
+            converged = true;
+            break;
+        }
+        for (c, centre) in centres.iter_mut().enumerate() {
+            let in_c: Vec<usize> = (0..members.len())
+                .filter(|&p| labels[p] == c)
+                .map(|p| members[p])
+                .collect();
+            match space.mean(&in_c, centre) {
+                Some(m) => *centre = m,
+                None => {
+                    // An empty cluster restarts at the scan farthest from its
+                    // centre, so k clusters stay k.
+                    let far = (0..members.len())
+                        .max_by(|&a, &b| dist[a].total_cmp(&dist[b]))
+                        .unwrap_or(0);
+                    dist[far] = 0.0;
+                    *centre = space.centre_of(members[far]);
+                }
+            }
+        }
+    }
+    (labels, seed_pos, iterations, converged, cost)
+}

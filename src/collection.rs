@@ -1,0 +1,362 @@
+//! The pipeline object: descriptors made with one set of parameters, their
+//! scan names, and what is computed from them once and kept (the prepared
+//! space and, for sets small enough, the n x n Delta matrix). The CLI and
+//! the JS API both call it, so the parameter merge, the matrix policy and
+//! the name handling are written once, here.
+
+use crate::cluster::hkmeans::HkMeansParams;
+use crate::cluster::{
+    medoids, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams, KMeansResult,
+    KMedoids, KMedoidsParams, KMedoidsResult, Tree,
+};
+use crate::descriptor::{Descriptor, DescriptorParams};
+use crate::distance::{DistanceMatrix, DistanceOptions, Space};
+use crate::error::{invalid, Error, Result};
+use crate::eval::SweepPoint;
+use crate::model::LabelledModel;
+use serde_json::Value;
+
+/// Above this many scans the n x n Delta matrix is not built (it would take
+/// n^2 * 4 bytes): hierarchical k-means++ and k-means take their
+/// centre-based paths, DBSCAN and k-medoids are refused.
+pub const MATRIX_LIMIT: usize = 5000;
+
+/// Descriptor parameters from a preset (default `indoor`) with the fields
+/// of `overrides` (a JSON object, possibly partial) put over it; unknown
+/// fields and invalid values are errors. The page's parameter form and the
+/// CLI's `--params` file both come through here.
+pub fn merge_params(preset: Option<&str>, overrides: Option<&Value>) -> Result<DescriptorParams> {
+    let base = DescriptorParams::preset(preset.unwrap_or("indoor"))?;
+    let Some(overrides) = overrides.filter(|v| !v.is_null()) else {
+        return Ok(base);
+    };
+    let Some(fields) = overrides.as_object() else {
+        return invalid("parameters must be a JSON object");
+    };
+    let mut merged = serde_json::to_value(&base)?;
+    for (k, v) in fields {
+        merged[k] = v.clone();
+    }
+    let p: DescriptorParams =
+        serde_json::from_value(merged).map_err(|e| Error::InvalidParameter(e.to_string()))?;
+    p.validate()?;
+    Ok(p)
+}
+
+/// Names for categories, from a JSON object `{label: name}` or an array
+/// `[[label, name], ...]`; null gives none.
+pub fn category_names(names: &Value) -> Result<Vec<(i32, String)>> {
+    match names {
+        Value::Null => Ok(Vec::new()),
+        Value::Object(map) => map
+            .iter()
+            .map(|(k, n)| match k.parse() {
+                Ok(l) => Ok((l, n.as_str().unwrap_or_default().to_string())),
+                Err(_) => invalid(format!("names: {k:?} is not a label number")),
+            })
+            .collect(),
+        Value::Array(rows) => rows
+            .iter()
+            .map(|r| {
+                match (
+                    r.get(0).and_then(Value::as_i64).map(i32::try_from),
+                    r.get(1).and_then(Value::as_str),
+                ) {
+                    (Some(Ok(l)), Some(n)) => Ok((l, n.to_string())),
+                    _ => invalid("names: expected [[label, name], ...]"),
+                }
+            })
+            .collect(),
+        _ => invalid("names: expected an object {label: name} or [[label, name], ...]"),
+    }
+}
+
+/// Computed from the descriptors once, dropped when they change.
+#[derive(Debug)]
+struct Cache {
+    space: Space,
+    matrix: Option<DistanceMatrix>,
+}
+
+/// Described scans with their names and parameters, and the clustering
+/// calls on them. The prepared space and the Delta matrix are computed on
+/// first use and kept until a scan is added: a page re-cuts and
+/// re-computes medoids on every threshold drag.
+#[derive(Debug)]
+pub struct Collection {
+    params: DescriptorParams,
+    names: Vec<String>,
+    descriptors: Vec<Descriptor>,
+    cache: Option<Cache>,
+}
+
+impl Collection {
+    /// An empty collection for descriptors made with `params` (checked).
+    pub fn new(params: DescriptorParams) -> Result<Collection> {
+        params.validate()?;
+        Ok(Collection {
+            params,
+            names: Vec::new(),
+            descriptors: Vec::new(),
+            cache: None,
+        })
+    }
+
+    /// A collection of named descriptors, each checked against `params`
+    /// (an error names the scan).
+    pub fn from_parts(
+        params: DescriptorParams,
+        named: impl IntoIterator<Item = (String, Descriptor)>,
+    ) -> Result<Collection> {
+        let mut c = Collection::new(params)?;
+        for (name, d) in named {
+            c.push(name.clone(), d).map_err(|e| e.in_file(name))?;
+        }
+        Ok(c)
+    }
+
+    /// Add a descriptor after checking it fits the parameters; returns its
+    /// index.
+    pub fn push(&mut self, name: String, d: Descriptor) -> Result<usize> {
+        d.validate_for(&self.params)?;
+        self.names.push(name);
+        self.descriptors.push(d);
+        self.cache = None;
+        Ok(self.descriptors.len() - 1)
+    }
+
+    /// The descriptor parameters.
+    pub fn params(&self) -> &DescriptorParams {
+        &self.params
+    }
+
+    /// The scans' names, in order.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The descriptors, in order.
+    pub fn descriptors(&self) -> &[Descriptor] {
+        &self.descriptors
+    }
+
+    /// Number of scans.
+    pub fn len(&self) -> usize {
+        self.descriptors.len()
+    }
+
+    /// True when there are no scans.
+    pub fn is_empty(&self) -> bool {
+        self.descriptors.is_empty()
+    }
+
+    /// True when the collection is small enough for the n x n Delta matrix
+    /// ([`MATRIX_LIMIT`]).
+    pub fn uses_matrix(&self) -> bool {
+        self.len() <= MATRIX_LIMIT
+    }
+
+    /// The prepared space, computed once.
+    pub fn space(&mut self) -> Result<&Space> {
+        Ok(&self.cache()?.space)
+    }
+
+    /// The prepared space and the Delta matrix, each computed once; an
+    /// error above [`MATRIX_LIMIT`] scans.
+    pub fn space_and_matrix(&mut self) -> Result<(&Space, &DistanceMatrix)> {
+        if !self.uses_matrix() {
+            return invalid(format!(
+                "this needs the n x n Delta matrix, and {} scans are more than the {MATRIX_LIMIT} it is built for; use k-means or hierarchical k-means++",
+                self.len()
+            ));
+        }
+        let Cache { space, matrix } = self.cache()?;
+        let matrix = match matrix {
+            Some(m) => m,
+            None => matrix.insert(space.matrix()),
+        };
+        Ok((space, matrix))
+    }
+
+    /// The Delta matrix (see [`Collection::space_and_matrix`]).
+    pub fn matrix(&mut self) -> Result<&DistanceMatrix> {
+        Ok(self.space_and_matrix()?.1)
+    }
+
+    fn cache(&mut self) -> Result<&mut Cache> {
+        let cache = match self.cache.take() {
+            Some(c) => c,
+            None => Cache {
+                space: Space::new(&self.descriptors, DistanceOptions::from(&self.params))?,
+                matrix: None,
+            },
+        };
+        Ok(self.cache.insert(cache))
+    }
+
+    fn check_nonempty(&self) -> Result<()> {
+        if self.is_empty() {
+            return invalid("the set has no descriptors");
+        }
+        Ok(())
+    }
+
+    /// Delta between scans i and j.
+    pub fn delta(&mut self, i: usize, j: usize) -> Result<f32> {
+        let n = self.len();
+        if i >= n || j >= n {
+            return invalid(format!("index out of range (set has {n})"));
+        }
+        Ok(self.space()?.delta(i, j))
+    }
+
+    /// k-means (needs no matrix).
+    pub fn kmeans(&mut self, params: &KMeansParams) -> Result<KMeansResult> {
+        self.check_nonempty()?;
+        KMeans::fit(self.space()?, params)
+    }
+
+    /// k-medoids on the Delta matrix.
+    pub fn kmedoids(&mut self, params: &KMedoidsParams) -> Result<KMedoidsResult> {
+        self.check_nonempty()?;
+        let (space, matrix) = self.space_and_matrix()?;
+        KMedoids::fit(space, matrix, params)
+    }
+
+    /// DBSCAN on the Delta matrix: labels, -1 for noise.
+    pub fn dbscan(&mut self, params: &DbscanParams) -> Result<Vec<i32>> {
+        Dbscan::fit(self.matrix()?, params)
+    }
+
+    /// Epsilons worth sweeping (see [`crate::eval::epsilon_grid`]).
+    pub fn epsilon_grid(&mut self) -> Result<Vec<f32>> {
+        Ok(crate::eval::epsilon_grid(self.matrix()?))
+    }
+
+    /// DBSCAN at every epsilon x min points (see
+    /// [`crate::eval::dbscan_sweep`]).
+    pub fn dbscan_sweep(
+        &mut self,
+        truth: Option<&[String]>,
+        epsilons: &[f32],
+        min_points: &[usize],
+    ) -> Result<Vec<SweepPoint>> {
+        crate::eval::dbscan_sweep(self.matrix()?, truth, epsilons, min_points)
+    }
+
+    /// Hierarchical k-means++: the whole tree. Above [`MATRIX_LIMIT`] scans
+    /// it runs without the n x n matrix (node heights over
+    /// [`EXACT_DIAMETER_LIMIT`](crate::cluster::hkmeans::EXACT_DIAMETER_LIMIT)
+    /// scans are then an upper bound of the diameter).
+    pub fn hkmeans(&mut self, params: &HkMeansParams) -> Result<Tree> {
+        self.check_nonempty()?;
+        if self.uses_matrix() {
+            let (space, matrix) = self.space_and_matrix()?;
+            HierarchicalKMeans::fit(space, matrix, params)
+        } else {
+            HierarchicalKMeans::fit_without_matrix(self.space()?, params)
+        }
+    }
+
+    /// The most central scan of each category, (label, index) by label
+    /// (sampled above 64 members; see [`crate::cluster::medoids`]).
+    pub fn medoids(&mut self, labels: &[i32]) -> Result<Vec<(i32, usize)>> {
+        if labels.len() != self.len() {
+            return Err(Error::Mismatch(format!(
+                "{} labels for {} scans",
+                labels.len(),
+                self.len()
+            )));
+        }
+        Ok(medoids(self.space()?, labels, 64, 0))
+    }
+
+    /// A labelled model from cluster labels and a name per label.
+    pub fn build_model(&self, labels: &[i32], names: &[(i32, String)]) -> Result<LabelledModel> {
+        LabelledModel::build(&self.params, &self.descriptors, labels, names)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parameters_merge_over_a_preset_and_refuse_what_is_not_one() {
+        let p = merge_params(
+            Some("outdoor"),
+            Some(&serde_json::json!({"voxel_size": 2.5})),
+        )
+        .unwrap();
+        assert_eq!(p.voxel_size, 2.5);
+        assert_eq!(p.ranges, DescriptorParams::outdoor().ranges);
+        assert_eq!(
+            merge_params(None, None).unwrap(),
+            DescriptorParams::indoor()
+        );
+        for (over, want) in [
+            (serde_json::json!({"voxel_sise": 2}), "voxel_sise"),
+            (serde_json::json!({"voxel_size": -2}), "voxel_size"),
+            (serde_json::json!([1]), "must be a JSON object"),
+        ] {
+            let e = merge_params(None, Some(&over)).unwrap_err().to_string();
+            assert!(
+                e.starts_with("invalid parameter: ") && e.contains(want),
+                "{e}"
+            );
+        }
+    }
+
+    #[test]
+    fn names_come_as_an_object_or_pairs() {
+        let want = vec![(0, "hall".to_string()), (2, "lab".to_string())];
+        let obj = serde_json::json!({"0": "hall", "2": "lab"});
+        assert_eq!(category_names(&obj).unwrap(), want);
+        let pairs = serde_json::json!([[0, "hall"], [2, "lab"]]);
+        assert_eq!(category_names(&pairs).unwrap(), want);
+        assert!(category_names(&Value::Null).unwrap().is_empty());
+        for bad in [
+            serde_json::json!({"x": "hall"}),
+            serde_json::json!([["0", "hall"]]),
+            serde_json::json!("hall"),
+        ] {
+            let e = category_names(&bad).unwrap_err().to_string();
+            assert!(e.contains("names: "), "{e}");
+        }
+    }
+
+    /// The matrix policy: above MATRIX_LIMIT scans hierarchical k-means++
+    /// builds its tree without the n x n matrix (two kinds of scan, split
+    /// at the root, each child's scans equal), and what needs the matrix is
+    /// refused with a message saying so.
+    #[test]
+    fn above_the_limit_no_matrix_is_built() {
+        let params = DescriptorParams::indoor();
+        let (rows, cols) = (params.rows(), params.cols());
+        let kind = |hot: usize| {
+            let mut m = vec![1u32; rows * cols];
+            m[hot] = 50;
+            Descriptor {
+                rows,
+                cols,
+                matrices: vec![m],
+                summary: Default::default(),
+            }
+        };
+        let n = MATRIX_LIMIT + 1;
+        let named = (0..n).map(|i| (format!("s{i}"), kind(if i % 2 == 0 { 0 } else { 5 })));
+        let mut set = Collection::from_parts(params, named).unwrap();
+        assert!(!set.uses_matrix());
+        let tree = set.hkmeans(&HkMeansParams::new(0)).unwrap();
+        assert!(set.cache.as_ref().is_some_and(|c| c.matrix.is_none()));
+        let cut = tree.cut_k(2).unwrap();
+        assert!((0..n).all(|i| cut.labels[i] == cut.labels[i % 2]));
+        assert_ne!(cut.labels[0], cut.labels[1]);
+        for e in [
+            set.kmedoids(&KMedoidsParams::new(2)).unwrap_err(),
+            set.dbscan(&DbscanParams::new(0.1, 2)).unwrap_err(),
+        ] {
+            assert!(e.to_string().contains("n x n Delta matrix"), "{e}");
+        }
+    }
+}

@@ -1,0 +1,136 @@
+//! Descriptors prepared once for many comparisons: normalised, column-major
+//! and padded.
+
+use super::{check_shape, DistanceOptions};
+use crate::descriptor::{Descriptor, Normalisation};
+use crate::error::Result;
+
+/// A descriptor with its matrices normalised once, for many comparisons.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Prepared {
+    pub rows: usize,
+    pub cols: usize,
+    /// |F|.
+    pub total: f32,
+    /// The normalised matrices of every candidate orientation, one after
+    /// another in one buffer, column-major (each range interval's class
+    /// counts contiguous, so the per-column norm of Eq. 2 reads memory in
+    /// order; measured in benches/stages.rs, delta_matrix), each column
+    /// padded with zeros to `stride` (a multiple of 4) rows: the Delta
+    /// matrix's inner loop then runs on whole SIMD lanes and one allocation
+    /// (measured: see [`delta_prepared`](super::delta_prepared)). Every metric gives the same
+    /// value with or without the zero rows, so this is the only copy.
+    pub padded: Vec<f32>,
+    pub stride: usize,
+}
+
+/// A column-major rows x cols matrix with each column padded with zeros to
+/// `stride` rows.
+pub fn pad(m: &[f32], rows: usize, stride: usize) -> Vec<f32> {
+    let cols = m.len() / rows.max(1);
+    let mut out = vec![0f32; stride * cols];
+    for (col, to) in m.chunks_exact(rows).zip(out.chunks_exact_mut(stride)) {
+        to[..rows].copy_from_slice(col);
+    }
+    out
+}
+
+/// The inverse of [`pad`]: the first `rows` of every `stride`.
+pub fn unpad(m: &[f32], rows: usize, stride: usize) -> Vec<f32> {
+    m.chunks_exact(stride)
+        .flat_map(|col| &col[..rows])
+        .copied()
+        .collect()
+}
+
+/// Row-major rows x cols to column-major with each column padded with
+/// zeros to `stride` rows, appended to `out`.
+fn extend_column_major_padded(
+    out: &mut Vec<f32>,
+    m: &[f32],
+    rows: usize,
+    cols: usize,
+    stride: usize,
+) {
+    let start = out.len();
+    out.resize(start + stride * cols, 0.0);
+    for r in 0..rows {
+        for c in 0..cols {
+            out[start + c * stride + r] = m[r * cols + c];
+        }
+    }
+}
+
+impl Prepared {
+    pub fn new(d: &Descriptor, opts: DistanceOptions) -> Result<Prepared> {
+        d.validate()?;
+        let total = d.total() as f32;
+        let stride = d.rows.next_multiple_of(4);
+        let mut padded = Vec::with_capacity(stride * d.cols * d.matrices.len());
+        for m in &d.matrices {
+            let normalised = normalise(m, d.rows, d.cols, opts.normalisation);
+            extend_column_major_padded(&mut padded, &normalised, d.rows, d.cols, stride);
+        }
+        Ok(Prepared {
+            rows: d.rows,
+            cols: d.cols,
+            total,
+            padded,
+            stride,
+        })
+    }
+
+    /// The candidate orientations' padded matrices (`stride` x `cols`).
+    pub fn candidates(&self) -> std::slice::ChunksExact<'_, f32> {
+        self.padded.chunks_exact(self.stride * self.cols)
+    }
+
+    /// Candidate k's padded matrix (`stride` x `cols`).
+    pub fn candidate(&self, k: usize) -> &[f32] {
+        let size = self.stride * self.cols;
+        &self.padded[k * size..(k + 1) * size]
+    }
+
+    /// Bytes this item holds on the heap; `examples/scaling.rs` reports it
+    /// beside the Delta matrix's size.
+    pub fn heap_bytes(&self) -> usize {
+        self.padded.capacity() * std::mem::size_of::<f32>()
+    }
+}
+
+/// Normalise one count matrix.
+pub fn normalise(m: &[u32], rows: usize, cols: usize, how: Normalisation) -> Vec<f32> {
+    match how {
+        Normalisation::Total => {
+            let t: u64 = m.iter().map(|&v| v as u64).sum();
+            let inv = if t > 0 { 1.0 / t as f32 } else { 0.0 };
+            m.iter().map(|&v| v as f32 * inv).collect()
+        }
+        Normalisation::PerColumn => {
+            let mut out = vec![0f32; m.len()];
+            for c in 0..cols {
+                let t: u64 = (0..rows).map(|r| m[r * cols + c] as u64).sum();
+                if t > 0 {
+                    for r in 0..rows {
+                        out[r * cols + c] = m[r * cols + c] as f32 / t as f32;
+                    }
+                }
+            }
+            out
+        }
+    }
+}
+
+/// Prepare many descriptors, checking they share one shape.
+pub fn prepare_all(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<Vec<Prepared>> {
+    if let Some(first) = descriptors.first() {
+        for d in descriptors {
+            check_shape((d.rows, d.cols), (first.rows, first.cols))?;
+        }
+    }
+    descriptors
+        .iter()
+        .enumerate()
+        .map(|(i, d)| Prepared::new(d, opts).map_err(|e| e.in_file(format!("descriptor {i}"))))
+        .collect()
+}

@@ -1,0 +1,160 @@
+//! `DescriptorSet`: the JS face of [`Collection`].
+
+use super::*;
+
+/// Many descriptors made with the same parameters: distances, clustering,
+/// evaluation and models.
+#[wasm_bindgen]
+pub struct DescriptorSet {
+    set: Collection,
+}
+
+#[wasm_bindgen]
+impl DescriptorSet {
+    /// An empty set for descriptors made with `params` (partial object ok).
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "Partial<DescriptorParams> | undefined | null")]
+        params: JsValue,
+        preset: Option<String>,
+    ) -> WasmResult<DescriptorSet> {
+        Ok(DescriptorSet {
+            set: Collection::new(params_from_js(params, preset)?)?,
+        })
+    }
+    /// Add a descriptor (from `DescribedScan.descriptorJson()`); returns its index.
+    #[wasm_bindgen(js_name = addJson)]
+    pub fn add_json(&mut self, json: &str) -> WasmResult<usize> {
+        let name = format!("scan {}", self.set.len());
+        Ok(self.set.push(name, descriptor_from_json(json)?)?)
+    }
+    /// Add a described scan; returns its index.
+    pub fn add(&mut self, scan: &DescribedScan) -> WasmResult<usize> {
+        Ok(self.set.push(scan.name.clone(), scan.descriptor.clone())?)
+    }
+    #[wasm_bindgen(getter)]
+    pub fn length(&self) -> usize {
+        self.set.len()
+    }
+    /// The parameters, as a plain object.
+    #[wasm_bindgen(unchecked_return_type = "Required<DescriptorParams>")]
+    pub fn params(&self) -> WasmResult<JsValue> {
+        to_js(self.set.params())
+    }
+    /// Delta between items i and j.
+    pub fn delta(&mut self, i: usize, j: usize) -> WasmResult<f32> {
+        Ok(self.set.delta(i, j)?)
+    }
+    /// The full Delta matrix, n x n row-major (computed once, then cached).
+    #[wasm_bindgen(js_name = deltaMatrix)]
+    pub fn delta_matrix(&mut self) -> WasmResult<js_sys::Float32Array> {
+        Ok(js_sys::Float32Array::from(&self.set.matrix()?.data[..]))
+    }
+    /// k-means: `seeding` is `random`, `stride` or `plusplus`. Returns
+    /// `{labels, seeds, iterations, converged, cost}`.
+    #[wasm_bindgen(unchecked_return_type = "KMeansResult")]
+    pub fn kmeans(
+        &mut self,
+        k: usize,
+        #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
+        seed: u32,
+    ) -> WasmResult<JsValue> {
+        let seeding: Seeding = seeding.parse()?;
+        to_js(
+            &self
+                .set
+                .kmeans(&KMeansParams::new(k).seeding(seeding).seed(seed.into()))?,
+        )
+    }
+    /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
+    #[wasm_bindgen(unchecked_return_type = "KMedoidsResult")]
+    pub fn kmedoids(&mut self, k: usize, seed: u32) -> WasmResult<JsValue> {
+        to_js(
+            &self
+                .set
+                .kmedoids(&KMedoidsParams::new(k).seed(seed.into()))?,
+        )
+    }
+    /// DBSCAN (Delta <= eps are neighbours; minPoints counts the scan itself).
+    /// Labels as Int32Array, -1 for noise.
+    pub fn dbscan(
+        &mut self,
+        eps: f32,
+        #[wasm_bindgen(js_name = minPoints)] min_points: usize,
+    ) -> WasmResult<js_sys::Int32Array> {
+        let labels = self.set.dbscan(&DbscanParams::new(eps, min_points))?;
+        Ok(js_sys::Int32Array::from(&labels[..]))
+    }
+    /// Epsilons worth sweeping on this set: quantiles 0.5 % to 50 % of the
+    /// Delta between two different scans, rounded up to 3 significant
+    /// digits, ascending.
+    #[wasm_bindgen(js_name = epsilonGrid)]
+    pub fn epsilon_grid(&mut self) -> WasmResult<js_sys::Float32Array> {
+        Ok(js_sys::Float32Array::from(&self.set.epsilon_grid()?[..]))
+    }
+    /// DBSCAN at every epsilon x minPoints (paper Fig. 3), epsilon-major:
+    /// `[{epsilon, min_points, clusters, inlier_ratio, ari, score}, ...]`.
+    /// `truth` (a class name per scan) adds `ari` and `score` (S = ARI x
+    /// inliers / all); without it they are `null`.
+    #[wasm_bindgen(
+        js_name = dbscanSweep,
+        unchecked_return_type = "SweepPoint[]"
+    )]
+    pub fn dbscan_sweep(
+        &mut self,
+        epsilons: &[f32],
+        #[wasm_bindgen(js_name = minPoints)] min_points: &[u32],
+        truth: Option<Vec<String>>,
+    ) -> WasmResult<JsValue> {
+        let cs: Vec<usize> = min_points.iter().map(|&c| c as usize).collect();
+        to_js(&self.set.dbscan_sweep(truth.as_deref(), epsilons, &cs)?)
+    }
+    /// Hierarchical k-means++: the whole tree, to cut at any threshold.
+    /// Above `matrixLimit` scans it runs without the n x n matrix (see
+    /// `usesMatrix`): heights of nodes over 1500 scans are then an upper
+    /// bound of the diameter.
+    pub fn hkmeans(&mut self, seed: u32) -> WasmResult<ClusterTree> {
+        Ok(ClusterTree {
+            tree: self.set.hkmeans(&HkMeansParams::new(seed.into()))?,
+        })
+    }
+    /// True when the set is small enough for the n x n Delta matrix.
+    #[wasm_bindgen(getter, js_name = usesMatrix)]
+    pub fn uses_matrix(&self) -> bool {
+        self.set.uses_matrix()
+    }
+    /// The largest set for which the Delta matrix is built.
+    #[wasm_bindgen(getter, js_name = matrixLimit)]
+    pub fn matrix_limit(&self) -> usize {
+        MATRIX_LIMIT
+    }
+    /// The most central scan of each category: flat pairs
+    /// `[label0, index0, label1, index1, ...]` (sampled above 64 members).
+    pub fn medoids(&mut self, labels: &[i32]) -> WasmResult<js_sys::Int32Array> {
+        let flat: Vec<i32> = (self.set.medoids(labels)?.into_iter())
+            .flat_map(|(l, i)| [l, i as i32])
+            .collect();
+        Ok(js_sys::Int32Array::from(&flat[..]))
+    }
+    /// Evaluate labels against ground-truth names (array of strings).
+    /// Returns `{accuracy, ari, score, inliers, total, confusion}`.
+    #[wasm_bindgen(unchecked_return_type = "Evaluation")]
+    pub fn evaluate(truth: Vec<String>, labels: &[i32]) -> WasmResult<JsValue> {
+        to_js(&crate::eval::evaluate(&truth, labels)?)
+    }
+    /// A labelled model from cluster labels and names (`{label: name}` object
+    /// or `[[label, name], ...]`).
+    #[wasm_bindgen(js_name = buildModel)]
+    pub fn build_model(
+        &self,
+        labels: &[i32],
+        #[wasm_bindgen(
+            unchecked_param_type = "Record<number, string> | [number, string][] | undefined | null"
+        )]
+        names: JsValue,
+    ) -> WasmResult<Model> {
+        Ok(Model {
+            model: self.set.build_model(labels, &names_from_js(names)?)?,
+        })
+    }
+}

@@ -1,0 +1,61 @@
+//! `Simulator`: simulated scans with ground truth.
+
+use super::*;
+
+/// A simulated data set; scans are made one at a time.
+#[wasm_bindgen]
+pub struct Simulator {
+    sim: sim::Simulation,
+}
+
+#[wasm_bindgen]
+impl Simulator {
+    /// `scene`: `indoor`, `warehouse` or `outdoor`; `scans`: per kind for
+    /// indoor, along the path otherwise; `buildings` (indoor): `one` (the
+    /// default: rooms of a kind share a plan) or `many`.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\"")]
+        scene: &str,
+        seed: u32,
+        scans: Option<usize>,
+        buildings: Option<String>,
+    ) -> WasmResult<Simulator> {
+        let kind: sim::SceneKind = scene.parse()?;
+        let mut p = sim::SimParams::new(kind, seed.into());
+        if let Some(n) = scans {
+            p.scans = n;
+        }
+        if let Some(b) = buildings {
+            p.buildings = b.parse()?;
+        }
+        Ok(Simulator {
+            sim: sim::Simulation::new(&p)?,
+        })
+    }
+    #[wasm_bindgen(getter)]
+    pub fn length(&self) -> usize {
+        self.sim.len()
+    }
+    /// Scan i as binary PLY bytes plus `{name, label, pose}`:
+    /// returns `{name, label, pose, bytes}`.
+    #[wasm_bindgen(unchecked_return_type = "SimulatedScan")]
+    pub fn scan(&self, i: usize) -> WasmResult<JsValue> {
+        if i >= self.sim.len() {
+            return Err(Error::InvalidParameter(format!("scan {i} of {}", self.sim.len())).into());
+        }
+        let s = self.sim.scan(i);
+        #[derive(Serialize)]
+        struct Meta<'a> {
+            name: &'a str,
+            label: &'a str,
+            pose: &'a crate::io::poses::Pose,
+        }
+        let (name, label, pose) = (&s.name, &s.label, &s.pose);
+        let obj = to_js(&Meta { name, label, pose })?;
+        let bytes = write::ply(&s.points, write::PlyEncoding::BinaryLittleEndian, false);
+        js_sys::Reflect::set(&obj, &"bytes".into(), &js_sys::Uint8Array::from(&bytes[..]))
+            .map_err(|_| JsError::new("cannot build object"))?;
+        Ok(obj)
+    }
+}
