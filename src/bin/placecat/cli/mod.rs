@@ -134,6 +134,7 @@ impl From<Limits> for placecat::io::ReadLimits {
         placecat::io::ReadLimits {
             max_points: l.max_points,
             max_bytes: l.max_bytes,
+            ..Default::default()
         }
     }
 }
