@@ -390,3 +390,15 @@ fn ascii_errors_name_the_line_in_the_file() {
         "l.pcd: PCD: line 11: \"oops\" is not a number (point 1 of 2)"
     );
 }
+
+#[test]
+fn csv_poses_may_quote_names_that_hold_commas() {
+    let p = poses::parse("name,x,y,z\n\"a,1.ply\",1,2,3\n\"b \"\"2\"\".ply\",4,5\n").unwrap();
+    let names: Vec<_> = p.poses.iter().map(|p| p.name.clone().unwrap()).collect();
+    assert_eq!(names, ["a,1.ply", "b \"2\".ply"]);
+    assert_eq!(p.poses[0].position, [1.0, 2.0, 3.0]);
+    let e = poses::parse("name,x,y\n\"a.ply,1,2\n")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "poses: CSV: line 2: a quote opened here is not closed");
+}
