@@ -599,3 +599,34 @@ fn model_from_named_scans_classifies_new_scans() {
         "{err}"
     );
 }
+
+#[test]
+fn lenient_reads_a_damaged_file_that_strict_refuses() {
+    let bad = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/bad/ply_trailing_bytes.ply"
+    );
+    let e = fails(placecat().args(["info", bad, "--json"]));
+    assert!(
+        e.contains("ply_trailing_bytes.ply: PLY: the body does not match the header: 24 bytes follow the 3216 bytes it declares"),
+        "{e}"
+    );
+    let out = succeeds(placecat().args(["info", bad, "--json", "--lenient"]));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["count"], 86);
+    // describe takes the flag too: strict skips the file for its header.
+    let dir = tmp("lenient");
+    let out = dir.join("d.json");
+    let strict = placecat()
+        .args(["describe", bad, "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(String::from_utf8_lossy(&strict.stderr).contains("does not match the header"));
+    let lenient = placecat()
+        .args(["describe", "--lenient", bad, "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(!String::from_utf8_lossy(&lenient.stderr).contains("does not match the header"));
+}
