@@ -238,10 +238,12 @@ fn skip_binary_elements(
             let left = body.len() - pos;
             match checked_len(el.count, stride) {
                 Some(len) if len <= left => pos += len,
-                _ => return Err(format!(
+                _ => {
+                    return Err(format!(
                     "element {} claims {} records of {stride} bytes but only {left} bytes remain",
                     el.name, el.count
-                )),
+                ))
+                }
             }
         } else {
             for r in 0..el.count {
