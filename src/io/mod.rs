@@ -226,6 +226,26 @@ impl<'a> AsciiRows<'a> {
         }
     }
 
+    /// True when no row is left: a short row there is where a cut file ends.
+    pub(crate) fn at_end(&self) -> bool {
+        self.clone().next_row(&mut Vec::new()).is_none()
+    }
+
+    /// After the declared rows, a strict read wants none left: else the
+    /// line of the first extra one, after `what` (the rows declared).
+    pub(crate) fn check_end(
+        &mut self,
+        what: &str,
+        limits: &ReadLimits,
+    ) -> std::result::Result<(), String> {
+        match self.next_row(&mut Vec::new()) {
+            Some(line) if !limits.lenient => Err(format!(
+                "line {line}: data after {what} (the file is damaged, or its header's counts are wrong)"
+            )),
+            _ => Ok(()),
+        }
+    }
+
     /// Fill `values` with the next non-blank line's values; its line number.
     pub(crate) fn next_row(&mut self, values: &mut Vec<&'a str>) -> Option<usize> {
         for (i, line) in self.lines.by_ref() {

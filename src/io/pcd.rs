@@ -352,7 +352,7 @@ fn read_ascii(
         };
         if words.len() != per_line {
             // A short last row is where a cut file ends.
-            let cut = words.len() < per_line && rows.clone().next_row(&mut Vec::new()).is_none();
+            let cut = words.len() < per_line && rows.at_end();
             return err(format!(
                 "{}line {line}: {} values where the fields declare {per_line} (point {r} of {n})",
                 if cut { "truncated: " } else { "" },
@@ -370,12 +370,7 @@ fn read_ascii(
         }
         pts.push(p);
     }
-    if !limits.lenient {
-        if let Some(line) = rows.next_row(&mut words) {
-            return err(format!(
-                "line {line}: data after the {n} points the header declares (the file is damaged, or its POINTS is wrong)"
-            ));
-        }
-    }
+    rows.check_end(&format!("the {n} points the header declares"), limits)
+        .map_err(Error::Pcd)?;
     Ok(pts)
 }

@@ -421,7 +421,7 @@ fn read_ascii(
             };
             let p = ascii_record(&values, el, xyz).map_err(|(e, short)| {
                 // A short last row is where a cut file ends.
-                let cut = if short && rows.clone().next_row(&mut Vec::new()).is_none() {
+                let cut = if short && rows.at_end() {
                     "truncated: "
                 } else {
                     ""
@@ -436,13 +436,8 @@ fn read_ascii(
             }
         }
     }
-    if !limits.lenient {
-        if let Some(line) = rows.next_row(&mut values) {
-            return err(format!(
-                "line {line}: data after the last element the header declares (the file is damaged, or its header counts are wrong)"
-            ));
-        }
-    }
+    rows.check_end("the last element the header declares", limits)
+        .map_err(Error::Ply)?;
     Ok(points)
 }
 

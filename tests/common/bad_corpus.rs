@@ -6,10 +6,11 @@
 
 /// Every file of the corpus, embedded (wasm tests cannot read a folder).
 /// tests/bad_files.rs checks that this list is the folder's.
-pub const BAD_FILES: [(&str, &[u8]); 16] = [
+pub const BAD_FILES: [(&str, &[u8]); 17] = [
     ("ok_pcd_ascii_crlf.pcd", include_bytes!("../data/bad/ok_pcd_ascii_crlf.pcd")),
     ("ok_pcd_zero_padding.pcd", include_bytes!("../data/bad/ok_pcd_zero_padding.pcd")),
     ("ok_ply_trailing_newline.ply", include_bytes!("../data/bad/ok_ply_trailing_newline.ply")),
+    ("pcd_ascii_extra_row.pcd", include_bytes!("../data/bad/pcd_ascii_extra_row.pcd")),
     ("pcd_ascii_row_values.pcd", include_bytes!("../data/bad/pcd_ascii_row_values.pcd")),
     ("pcd_binary_trailing_bytes.pcd", include_bytes!("../data/bad/pcd_binary_trailing_bytes.pcd")),
     ("pcd_size_entries.pcd", include_bytes!("../data/bad/pcd_size_entries.pcd")),

@@ -112,6 +112,8 @@ head = (
 write("ply_list_length_over_32_bits.ply", head + struct.pack("<3f", 1, 2, 3) + struct.pack("<d3i", 2.0**32 + 3, 0, 0, 0))
 # 12. An ascii PLY with a data line after the last declared element.
 write("ply_ascii_extra_row.ply", ascii_ply_head(2) + "0 0 0\n1 1 1\n2 2 2\n")
+# 12b. The same in an ascii PCD (POINTS 2, three rows).
+write("pcd_ascii_extra_row.pcd", pcd_head(2, "ascii") + "0 0 0\n1 1 1\n2 2 2\n")
 # 13. An ascii PLY whose header declares more faces than the body holds.
 write(
     "ply_ascii_faces_missing.ply",
