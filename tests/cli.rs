@@ -589,9 +589,23 @@ fn model_from_named_scans_classifies_new_scans() {
         serde_json::from_str(&std::fs::read_to_string(&model_path).unwrap()).unwrap();
     assert_eq!(model["categories"][0]["name"], "room, \"B\" wing");
     assert_eq!(model["categories"][1]["name"], "street");
+    // As a spreadsheet saves it: a byte order mark, CRLF, a line break
+    // inside a quoted name.
+    std::fs::write(
+        &names,
+        "\u{feff}file,category\r\nroom_scan1.pcd,\"room\r\nB\"\r\n251370668.pcd,street\r\n",
+    )
+    .unwrap();
+    succeeds(&mut build_model());
+    let model: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&model_path).unwrap()).unwrap();
+    assert_eq!(model["categories"][0]["name"], "room\r\nB");
     std::fs::write(&names, "file,category\nroom_scan1.pcd,\"room\n").unwrap();
     let err = fails(&mut build_model());
-    assert!(err.contains("line 2: a quote is not closed"), "{err}");
+    assert!(
+        err.contains("names.csv: CSV: line 2: a quote opened here is not closed"),
+        "{err}"
+    );
     std::fs::write(&names, "file,category\nelsewhere.pcd,room\n").unwrap();
     let err = fails(&mut build_model());
     assert!(
