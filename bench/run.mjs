@@ -35,7 +35,7 @@ if (!existsSync(join(ART, 'bench-1000', 'scan_00000.ply')) || readdirSync(join(A
   execFileSync(cli, ['simulate', '--scene', 'outdoor', '--seed', '1', '--scans', String(POOL_SCANS), '-o', join(ART, 'bench-1000')], { stdio: 'inherit' });
 }
 execSync(`cp ${join(ART, 'bench-1000', `scan_${String(Math.floor(POOL_SCANS / 2)).padStart(5, '0')}.ply`)} ${simFile}`);
-const realFile = join(PARENT, 'shared/data/real/kitti00/000094.bin');
+const realFile = join(ROOT, 'tests/data/real/kitti00/000094.bin');
 const server = await serve(PARENT, 0);
 const base = `http://127.0.0.1:${server.address().port}`;
 const browser = await chromium.launch({

@@ -14,7 +14,7 @@ use placecat::*;
 use std::hint::black_box;
 use std::time::Duration;
 
-const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/real");
+const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
 
 /// A simulated outdoor scan of about `rays` rays.
 fn sim_scan(beams: usize, azimuth: usize) -> Vec<[f32; 3]> {

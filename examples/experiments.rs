@@ -1,6 +1,6 @@
 //! Regenerates docs/experiments.md and its figures: the paper's experiments
 //! (Magnusson et al., IROS 2017, Sec. V) repeated on simulated data with
-//! known ground truth, and on the real files in ../shared/data/real.
+//! known ground truth, and on the real files in tests/data/real.
 //!
 //!     cargo run --release --example experiments
 //!
@@ -474,7 +474,7 @@ fn main() {
     let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     std::fs::create_dir_all(&docs).unwrap();
     let mut out = String::new();
-    writeln!(out, "# Experiments\n\nRegenerate with `cargo run --release --example experiments` (writes this file and the SVGs beside it).\n\nData: `placecat simulate` scenes (indoor: 5 kinds x 40 scans, 8 rooms per kind, 5 scans per room at free spots with a random heading, a 128-beam sensor with a 90 degree vertical field like an Ouster OS0-128; warehouse and outdoor: 150 scans along one trajectory). Sections 1 to 4 use simulator seed 1, section 1b the seeds 1 to 40. Clustering seeds 0..9. No descriptor or clustering parameter was tuned on these results.\n\n**How the indoor simulator came to be.** Its first version drew every room's size over a wide range, and its kinds overlapped in size (kitchens and study rooms of 8 to 25 m2; offices and labs overlapping too). On it the paper's descriptor gave deterministic k-means 84.0 % and hierarchical k-means++ 81.7 % (means over simulator seeds 1 to 5), with office/lab and kitchen/study room confused. The present version (`src/sim/scenes.rs`) gives each kind the floor area and furniture of its use (a kitchenette, a group study room lined with bookcases round a large table, an open-plan office with desk islands behind partitions, a lab with island benches, fume cupboards and ducts under a high ceiling, corridors with doors and notice boards; chairs at any angle) and, by default, builds the rooms of a kind to one plan (sides within ±10 %), as in a survey of one building; `--buildings many` draws every room afresh. Its sensor was first a 32-beam one (32k rays a scan); it is now a 128-beam one (131k rays), as dense as the real room scans in `../shared/data/real` (112k points). That change was made after a 128-beam variant had raised the hierarchical figure on seeds 1 to 5 (the 32-beam figures are the last row of section 1b). The simulator was developed while looking at seeds 1 to 5; seeds 6 to 10 were first run once the room kinds were fixed (with the 32-beam sensor), and seeds 11 to 40 only after the last change.\n").unwrap();
+    writeln!(out, "# Experiments\n\nRegenerate with `cargo run --release --example experiments` (writes this file and the SVGs beside it).\n\nData: `placecat simulate` scenes (indoor: 5 kinds x 40 scans, 8 rooms per kind, 5 scans per room at free spots with a random heading, a 128-beam sensor with a 90 degree vertical field like an Ouster OS0-128; warehouse and outdoor: 150 scans along one trajectory). Sections 1 to 4 use simulator seed 1, section 1b the seeds 1 to 40. Clustering seeds 0..9. No descriptor or clustering parameter was tuned on these results.\n\n**How the indoor simulator came to be.** Its first version drew every room's size over a wide range, and its kinds overlapped in size (kitchens and study rooms of 8 to 25 m2; offices and labs overlapping too). On it the paper's descriptor gave deterministic k-means 84.0 % and hierarchical k-means++ 81.7 % (means over simulator seeds 1 to 5), with office/lab and kitchen/study room confused. The present version (`src/sim/scenes.rs`) gives each kind the floor area and furniture of its use (a kitchenette, a group study room lined with bookcases round a large table, an open-plan office with desk islands behind partitions, a lab with island benches, fume cupboards and ducts under a high ceiling, corridors with doors and notice boards; chairs at any angle) and, by default, builds the rooms of a kind to one plan (sides within ±10 %), as in a survey of one building; `--buildings many` draws every room afresh. Its sensor was first a 32-beam one (32k rays a scan); it is now a 128-beam one (131k rays), as dense as the real room scans in `tests/data/real` (112k points). That change was made after a 128-beam variant had raised the hierarchical figure on seeds 1 to 5 (the 32-beam figures are the last row of section 1b). The simulator was developed while looking at seeds 1 to 5; seeds 6 to 10 were first run once the room kinds were fixed (with the 32-beam sensor), and seeds 11 to 40 only after the last change.\n").unwrap();
 
     // 1. Indoor, Tab. I.
     let indoor_p = DescriptorParams::indoor();
@@ -746,7 +746,7 @@ fn main() {
     }
 
     // 5. Real files.
-    let real = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/real");
+    let real = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
     if let Ok(groups) = std::fs::read_to_string(format!("{real}/groups.csv")) {
         let scans: Vec<(String, String, Vec<[f32; 3]>)> = groups
             .lines()
@@ -761,7 +761,7 @@ fn main() {
                 (f.to_string(), p.to_string(), c.points)
             })
             .collect();
-        writeln!(out, "## 5. Real scans (`../shared/data/real`, 18 files, 4 places)\n\n| preset | nearest neighbour | hierarchical, 4 categories (10 seeds) | deterministic k-means k=4 |\n|---|---|---|---|").unwrap();
+        writeln!(out, "## 5. Real scans (`tests/data/real`, 18 files, 4 places)\n\n| preset | nearest neighbour | hierarchical, 4 categories (10 seeds) | deterministic k-means k=4 |\n|---|---|---|---|").unwrap();
         let mut counts = String::new();
         for p in [DescriptorParams::indoor(), DescriptorParams::outdoor()] {
             let set = describe_set(&scans, &p);

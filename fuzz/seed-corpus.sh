@@ -3,7 +3,7 @@
 # every format), trimmed so each seed stays small.
 set -euo pipefail
 cd "$(dirname "$0")"
-REAL=../../shared/data/real
+REAL=../tests/data/real
 rm -rf corpus && mkdir -p corpus/{ply,pcd,kitti,poses,describe,json}
 cargo run --quiet --release --manifest-path ../Cargo.toml --example write_corpus -- corpus
 cp $REAL/kitti00/poses.txt corpus/poses/kitti.txt

@@ -38,10 +38,10 @@ assert.ok(sweep.some((p) => p.clusters === 2 && p.score === 1), `sweep: ${JSON.s
 assert.throws(() => set.kmeans(0, 'stride', 0), /k must be at least 1/);
 console.log(`placecat ${version()} from the packed tarball: labels ${labels.join(',')}`);
 JS
-node consume.mjs "$root/../shared/data/real"
+node consume.mjs "$root/tests/data/real"
 
 # The README's Node example, verbatim, beside the files it names: docs that run.
-real="$root/../shared/data/real"
+real="$root/tests/data/real"
 ln -s "$real"/pcl_room/room_scan1.pcd "$real"/pcl_room/room_scan2.pcd \
   "$real"/velodyne_pair/251370668.pcd "$real"/velodyne_pair/251371071.pcd .
 node -e '

@@ -589,13 +589,58 @@ fn model_from_named_scans_classifies_new_scans() {
         serde_json::from_str(&std::fs::read_to_string(&model_path).unwrap()).unwrap();
     assert_eq!(model["categories"][0]["name"], "room, \"B\" wing");
     assert_eq!(model["categories"][1]["name"], "street");
+    // As a spreadsheet saves it: a byte order mark, CRLF, a line break
+    // inside a quoted name.
+    std::fs::write(
+        &names,
+        "\u{feff}file,category\r\nroom_scan1.pcd,\"room\r\nB\"\r\n251370668.pcd,street\r\n",
+    )
+    .unwrap();
+    succeeds(&mut build_model());
+    let model: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&model_path).unwrap()).unwrap();
+    assert_eq!(model["categories"][0]["name"], "room\r\nB");
     std::fs::write(&names, "file,category\nroom_scan1.pcd,\"room\n").unwrap();
     let err = fails(&mut build_model());
-    assert!(err.contains("line 2: a quote is not closed"), "{err}");
+    assert!(
+        err.contains("names.csv: CSV: line 2: a quote opened here is not closed"),
+        "{err}"
+    );
     std::fs::write(&names, "file,category\nelsewhere.pcd,room\n").unwrap();
     let err = fails(&mut build_model());
     assert!(
         err.contains("names.csv") && err.contains("names none of the 4 scans"),
         "{err}"
     );
+}
+
+#[test]
+fn lenient_reads_a_damaged_file_that_strict_refuses() {
+    let bad = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/bad/ply_trailing_bytes.ply"
+    );
+    let e = fails(placecat().args(["info", bad, "--json"]));
+    assert!(
+        e.contains("ply_trailing_bytes.ply: PLY: the body does not match the header: 24 bytes follow the 3216 bytes it declares"),
+        "{e}"
+    );
+    let out = succeeds(placecat().args(["info", bad, "--json", "--lenient"]));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["count"], 86);
+    // describe takes the flag too: strict skips the file for its header.
+    let dir = tmp("lenient");
+    let out = dir.join("d.json");
+    let strict = placecat()
+        .args(["describe", bad, "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(String::from_utf8_lossy(&strict.stderr).contains("does not match the header"));
+    let lenient = placecat()
+        .args(["describe", "--lenient", bad, "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(!String::from_utf8_lossy(&lenient.stderr).contains("does not match the header"));
 }

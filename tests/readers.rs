@@ -272,6 +272,7 @@ fn lying_headers_fail_before_allocating() {
     let limits = ReadLimits {
         max_points: usize::MAX,
         max_bytes: usize::MAX,
+        ..Default::default()
     };
     let e = read_scan(ply, "huge.ply", &limits).unwrap_err().to_string();
     assert!(e.contains("truncated"), "{e}");
@@ -346,4 +347,58 @@ fn poses_in_three_formats() {
         let e = poses::parse(bad).unwrap_err().to_string();
         assert!(e.contains(want), "{bad:?}: {e}");
     }
+}
+
+#[test]
+fn padding_after_a_binary_body_is_bounded_and_blank() {
+    let pts = cloud();
+    let ply = write::ply(&pts, PlyEncoding::BinaryLittleEndian, false);
+    let pcd = write::pcd(&pts, PcdData::Binary).unwrap();
+    let max = placecat::io::MAX_PADDING;
+    for (bytes, name) in [(ply, "p.ply"), (pcd, "p.pcd")] {
+        let with = |tail: &[u8]| [&bytes[..], tail].concat();
+        for pad in [&b"\n"[..], b"\r\n", &vec![0u8; max], &vec![b' '; max]] {
+            assert_eq!(read(&with(pad), name).unwrap().points, pts, "{name}");
+        }
+        for bad in [&b"x"[..], b"\n\x01", &vec![0u8; max + 1]] {
+            let e = err_of(&with(bad), name);
+            assert!(
+                e.starts_with(name) && e.contains("does not match the header"),
+                "{e}"
+            );
+            let lenient = ReadLimits {
+                lenient: true,
+                ..Default::default()
+            };
+            let c = read_scan(&with(bad), name, &lenient).unwrap();
+            assert_eq!(c.points, pts, "{name}");
+        }
+    }
+}
+
+#[test]
+fn ascii_errors_name_the_line_in_the_file() {
+    // Line 11 of the file: 8 header lines, a good row, a blank line.
+    let ply = b"ply\nformat ascii 1.0\ncomment c\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n1 2 3\n\n4 5 6 7\n";
+    assert_eq!(
+        err_of(ply, "l.ply"),
+        "l.ply: PLY: line 11: 4 values where the header declares 3 (element vertex record 1 of 3)"
+    );
+    let pcd = b"VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n1 2 3\n1 2 oops\n";
+    assert_eq!(
+        err_of(pcd, "l.pcd"),
+        "l.pcd: PCD: line 11: \"oops\" is not a number (point 1 of 2)"
+    );
+}
+
+#[test]
+fn csv_poses_may_quote_names_that_hold_commas() {
+    let p = poses::parse("name,x,y,z\n\"a,1.ply\",1,2,3\n\"b \"\"2\"\".ply\",4,5\n").unwrap();
+    let names: Vec<_> = p.poses.iter().map(|p| p.name.clone().unwrap()).collect();
+    assert_eq!(names, ["a,1.ply", "b \"2\".ply"]);
+    assert_eq!(p.poses[0].position, [1.0, 2.0, 3.0]);
+    let e = poses::parse("name,x,y\n\"a.ply,1,2\n")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "poses: CSV: line 2: a quote opened here is not closed");
 }

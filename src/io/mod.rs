@@ -2,6 +2,7 @@
 //! files. The format is sniffed from the bytes where the format has a header
 //! (PLY, PCD), else taken from the file name (`.bin` = KITTI).
 
+pub mod csv;
 pub mod kitti;
 pub mod pcd;
 pub mod ply;
@@ -17,7 +18,8 @@ use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 
 /// Caps enforced before any large allocation, so a lying header or a huge
-/// file fails fast with a clear error instead of eating memory.
+/// file fails fast with a clear error instead of eating memory; and how
+/// strictly the body must match the header.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct ReadLimits {
@@ -25,6 +27,18 @@ pub struct ReadLimits {
     pub max_points: usize,
     /// Largest file size in bytes.
     pub max_bytes: usize,
+    /// Read the points the header declares and check nothing after them.
+    ///
+    /// Strict (the default) refuses a file whose body does not match its
+    /// header, since such a file is damaged and its points may be garbage:
+    /// bytes after every declared element that are not padding (see
+    /// [`MAX_PADDING`]), an element after `vertex` (PLY) that does not parse
+    /// to its end, data lines after the last declared one (ascii), and a PCD
+    /// header whose WIDTH x HEIGHT is not POINTS (POINTS is then used).
+    /// Lenient accepts these, for users who must read such files anyway. A
+    /// row of an ascii body with the wrong number of values is an error
+    /// either way: it shifts the points, so no reading of it is right.
+    pub lenient: bool,
 }
 
 impl Default for ReadLimits {
@@ -32,19 +46,54 @@ impl Default for ReadLimits {
         ReadLimits {
             max_points: 50_000_000,
             max_bytes: 2 << 30,
+            lenient: false,
         }
     }
 }
 
+/// The most bytes after a binary body's declared data that still count as
+/// harmless padding, when every one of them is a zero byte or ASCII
+/// whitespace (a trailing newline, alignment to a 4 KiB block). Anything
+/// else after the data (other bytes, or more of them) means the header does
+/// not describe the body: the file is damaged (a text round trip that grew
+/// the body, a concatenation) and is refused unless read leniently.
+pub const MAX_PADDING: usize = 4096;
+
+/// Check what follows the `declared` bytes of a binary body (`rest`); the
+/// error says how much is left over and why it is not padding.
+pub(crate) fn check_padding(
+    rest: &[u8],
+    declared: usize,
+    limits: &ReadLimits,
+) -> std::result::Result<(), String> {
+    let padding =
+        rest.len() <= MAX_PADDING && rest.iter().all(|&b| b == 0 || b.is_ascii_whitespace());
+    if padding || limits.lenient {
+        return Ok(());
+    }
+    Err(format!(
+        "the body does not match the header: {} bytes follow the {declared} bytes it declares \
+         (padding is at most {MAX_PADDING} zero or whitespace bytes); the file is damaged",
+        rest.len()
+    ))
+}
+
+/// `a * b` of a header's counts and sizes as a `usize`, or None when it does
+/// not fit: the same answer on 64-bit and 32-bit (wasm) targets for every
+/// product that is checked against a file's length.
+pub(crate) fn checked_len(a: u64, b: usize) -> Option<usize> {
+    usize::try_from(a).ok()?.checked_mul(b)
+}
+
 impl ReadLimits {
     pub(crate) fn check_points(&self, claimed: u64) -> Result<usize> {
-        if claimed > self.max_points as u64 {
-            return Err(Error::Limit(format!(
+        match usize::try_from(claimed) {
+            Ok(n) if n <= self.max_points => Ok(n),
+            _ => Err(Error::Limit(format!(
                 "the file claims {claimed} points, more than the limit of {}",
                 self.max_points
-            )));
+            ))),
         }
-        Ok(claimed as usize)
     }
 
     pub(crate) fn check_bytes(&self, len: usize) -> Result<()> {
@@ -125,7 +174,7 @@ pub fn read_path(path: &std::path::Path, limits: &ReadLimits) -> Result<PointClo
     let name = path.display().to_string();
     let meta = std::fs::metadata(path).map_err(|e| Error::from(e).in_file(&name))?;
     limits
-        .check_bytes(meta.len() as usize)
+        .check_bytes(usize::try_from(meta.len()).unwrap_or(usize::MAX))
         .map_err(|e| e.in_file(&name))?;
     let bytes = std::fs::read(path).map_err(|e| Error::from(e).in_file(&name))?;
     read_scan_named(&bytes, &name, limits)
@@ -157,4 +206,80 @@ pub(crate) fn split_header(
         }
     }
     None
+}
+
+/// The rows of an ascii body: its non-blank lines, split into values, each
+/// with its line number in the file (for errors a user can look up). Blank
+/// lines carry no values, so skipping them shifts nothing.
+#[derive(Clone)]
+pub(crate) struct AsciiRows<'a> {
+    lines: std::iter::Enumerate<std::str::Lines<'a>>,
+    /// Lines before the body (the header).
+    first: usize,
+}
+
+impl<'a> AsciiRows<'a> {
+    /// `header` is the bytes before `body`, to count its lines.
+    pub(crate) fn new(header: &[u8], body: &'a str) -> Self {
+        AsciiRows {
+            lines: body.lines().enumerate(),
+            first: header.iter().filter(|&&b| b == b'\n').count(),
+        }
+    }
+
+    /// True when no row is left: a short row there is where a cut file ends.
+    pub(crate) fn at_end(&self) -> bool {
+        self.clone().next_row(&mut Vec::new()).is_none()
+    }
+
+    /// After the declared rows, a strict read wants none left: else the
+    /// line of the first extra one, after `what` (the rows declared).
+    pub(crate) fn check_end(
+        &mut self,
+        what: &str,
+        limits: &ReadLimits,
+    ) -> std::result::Result<(), String> {
+        match self.next_row(&mut Vec::new()) {
+            Some(line) if !limits.lenient => Err(format!(
+                "line {line}: data after {what} (the file is damaged, or its header's counts are wrong)"
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// Fill `values` with the next non-blank line's values; its line number.
+    pub(crate) fn next_row(&mut self, values: &mut Vec<&'a str>) -> Option<usize> {
+        for (i, line) in self.lines.by_ref() {
+            values.clear();
+            values.extend(line.split_ascii_whitespace());
+            if !values.is_empty() {
+                return Some(self.first + i + 1);
+            }
+        }
+        None
+    }
+}
+
+/// The text of an ascii body. Bytes that are not UTF-8 are an error naming
+/// their line; read leniently, the text before them is used (the rows there
+/// are still checked, and a row that needs more text fails as truncated).
+pub(crate) fn ascii_text<'a>(
+    header: &[u8],
+    body: &'a [u8],
+    limits: &ReadLimits,
+) -> std::result::Result<&'a str, String> {
+    match std::str::from_utf8(body) {
+        Ok(t) => Ok(t),
+        Err(e) => {
+            let valid = &body[..e.valid_up_to()];
+            if limits.lenient {
+                return Ok(std::str::from_utf8(valid).expect("valid up to here"));
+            }
+            let line = header.iter().chain(valid).filter(|&&b| b == b'\n').count() + 1;
+            Err(format!(
+                "line {line}: the ascii data is not text (a byte that is not UTF-8 at body offset {})",
+                e.valid_up_to()
+            ))
+        }
+    }
 }

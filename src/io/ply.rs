@@ -6,7 +6,7 @@
 //! or allocation (the `ply-rs` crate builds a map per vertex, which is what
 //! makes it slow; see the benchmarks).
 
-use super::{split_header, ReadLimits, Scalar};
+use super::{ascii_text, check_padding, checked_len, split_header, AsciiRows, ReadLimits, Scalar};
 use crate::cloud::{Format, PointCloud};
 use crate::error::{Error, Result};
 
@@ -177,7 +177,8 @@ fn xyz_indices(el: &Element) -> Result<[usize; 3]> {
     Ok(idx)
 }
 
-/// Read a PLY file from its bytes.
+/// Read a PLY file from its bytes. Strict unless `limits.lenient`: the
+/// body must match the header to its end (see [`ReadLimits::lenient`]).
 pub fn read(bytes: &[u8], limits: &ReadLimits) -> Result<PointCloud> {
     let header = parse_header(bytes)?;
     let Some(vi) = header.elements.iter().position(|e| e.name == "vertex") else {
@@ -186,19 +187,19 @@ pub fn read(bytes: &[u8], limits: &ReadLimits) -> Result<PointCloud> {
     let vertex = &header.elements[vi];
     let n = limits.check_points(vertex.count)?;
     let xyz = xyz_indices(vertex)?;
-    let body = &bytes[header.body_offset..];
+    let (head, body) = bytes.split_at(header.body_offset);
     let (format, points) = match header.encoding {
         Encoding::Ascii => (
             Format::PlyAscii,
-            read_ascii(body, &header.elements[..vi], vertex, n, xyz)?,
+            read_ascii(head, body, &header.elements, vi, n, xyz, limits)?,
         ),
         Encoding::Little => (
             Format::PlyBinaryLittleEndian,
-            read_binary(body, &header.elements[..vi], vertex, n, xyz, true)?,
+            read_binary(body, &header.elements, vi, n, xyz, true, limits)?,
         ),
         Encoding::Big => (
             Format::PlyBinaryBigEndian,
-            read_binary(body, &header.elements[..vi], vertex, n, xyz, false)?,
+            read_binary(body, &header.elements, vi, n, xyz, false, limits)?,
         ),
     };
     Ok(PointCloud { format, points })
@@ -213,7 +214,9 @@ fn walk_record(body: &[u8], el: &Element, little: bool) -> Option<usize> {
             PropKind::List { count, item } => {
                 let end = pos.checked_add(count.size())?;
                 let n = count.read_count(body.get(pos..end)?, little)?;
-                pos = end.checked_add((n as usize).checked_mul(item.size())?)?;
+                // try_from, not `as`: a count past 2^32 must fail on wasm32
+                // as it does natively, not wrap to a small one.
+                pos = end.checked_add(checked_len(n, item.size())?)?;
             }
         }
         if pos > body.len() {
@@ -223,28 +226,32 @@ fn walk_record(body: &[u8], el: &Element, little: bool) -> Option<usize> {
     Some(pos)
 }
 
-/// Skip the elements before `vertex`; returns the offset where vertex data starts.
-fn skip_binary_elements(body: &[u8], before: &[Element], little: bool) -> Result<usize> {
+/// Skip whole elements; returns the bytes they take, or what ran past the end.
+fn skip_binary_elements(
+    body: &[u8],
+    elements: &[Element],
+    little: bool,
+) -> std::result::Result<usize, String> {
     let mut pos = 0usize;
-    for el in before {
+    for el in elements {
         if let Some(stride) = el.fixed_stride() {
-            let len = (el.count as u128) * (stride as u128);
-            if len > (body.len() - pos) as u128 {
-                return err(format!(
-                    "truncated: element {} claims {} records of {stride} bytes but only {} bytes remain",
-                    el.name,
-                    el.count,
-                    body.len() - pos
-                ));
+            let left = body.len() - pos;
+            match checked_len(el.count, stride) {
+                Some(len) if len <= left => pos += len,
+                _ => {
+                    return Err(format!(
+                    "element {} claims {} records of {stride} bytes but only {left} bytes remain",
+                    el.name, el.count
+                ))
+                }
             }
-            pos += len as usize;
         } else {
             for r in 0..el.count {
                 match walk_record(&body[pos..], el, little) {
                     Some(len) => pos += len,
                     None => {
-                        return err(format!(
-                            "truncated: element {} ends in record {r} of {}",
+                        return Err(format!(
+                            "element {} runs past the end of the file in record {r} of {}",
                             el.name, el.count
                         ))
                     }
@@ -257,14 +264,43 @@ fn skip_binary_elements(body: &[u8], before: &[Element], little: bool) -> Result
 
 fn read_binary(
     body: &[u8],
-    before: &[Element],
+    elements: &[Element],
+    vi: usize,
+    n: usize,
+    xyz: [usize; 3],
+    little: bool,
+    limits: &ReadLimits,
+) -> Result<Vec<[f32; 3]>> {
+    let vertex = &elements[vi];
+    let start = skip_binary_elements(body, &elements[..vi], little)
+        .or_else(|e| err(format!("truncated: {e}")))?;
+    let (points, len) = read_binary_vertices(&body[start..], vertex, n, xyz, little)?;
+    if limits.lenient {
+        return Ok(points);
+    }
+    // What follows the vertices must be exactly the elements declared after
+    // them, then at most padding: a body that does not parse to its end is
+    // damaged, and its vertices may be too (a text round trip that replaced
+    // bytes grows the body and shifts every record).
+    let end = start + len;
+    let after = skip_binary_elements(&body[end..], &elements[vi + 1..], little).or_else(|e| {
+        err(format!(
+            "the body does not match the header: {e} (the file is truncated or damaged)"
+        ))
+    })?;
+    check_padding(&body[end + after..], end + after, limits).map_err(Error::Ply)?;
+    Ok(points)
+}
+
+/// Read `n` vertex records at the start of `data`; the points and the bytes
+/// they take.
+fn read_binary_vertices(
+    data: &[u8],
     vertex: &Element,
     n: usize,
     xyz: [usize; 3],
     little: bool,
-) -> Result<Vec<[f32; 3]>> {
-    let start = skip_binary_elements(body, before, little)?;
-    let data = &body[start..];
+) -> Result<(Vec<[f32; 3]>, usize)> {
     let scalar_of = |i: usize| match vertex.props[i].kind {
         PropKind::Scalar(s) => s,
         PropKind::List { .. } => unreachable!("xyz_indices rejects lists"),
@@ -272,13 +308,16 @@ fn read_binary(
     let types = [scalar_of(xyz[0]), scalar_of(xyz[1]), scalar_of(xyz[2])];
 
     if let Some(stride) = vertex.fixed_stride() {
-        let need = (n as u128) * (stride as u128);
-        if need > data.len() as u128 {
-            return err(format!(
-                "truncated: the header claims {n} vertices of {stride} bytes ({need} bytes) but the body holds {} bytes",
-                data.len()
-            ));
-        }
+        let need = match n.checked_mul(stride) {
+            Some(need) if need <= data.len() => need,
+            _ => {
+                return err(format!(
+                    "truncated: the header claims {n} vertices of {stride} bytes ({} bytes) but the body holds {} bytes",
+                    n as u128 * stride as u128,
+                    data.len()
+                ))
+            }
+        };
         let offsets = xyz.map(|i| {
             vertex.props[..i]
                 .iter()
@@ -288,7 +327,7 @@ fn read_binary(
                 })
                 .sum::<usize>()
         });
-        let records = data[..n * stride].chunks_exact(stride);
+        let records = data[..need].chunks_exact(stride);
         let mut points = Vec::with_capacity(n);
         if little && types == [Scalar::F32; 3] {
             // The common case (lidar data as float32 LE): a tight loop the
@@ -300,7 +339,7 @@ fn read_binary(
                 records.map(|r| [0, 1, 2].map(|k| types[k].read(&r[offsets[k]..], little) as f32)),
             );
         }
-        return Ok(points);
+        return Ok((points, need));
     }
 
     // Vertex records with list properties: walk each record.
@@ -324,7 +363,11 @@ fn read_binary(
                     off += s.size();
                 }
                 PropKind::List { count, item } => {
-                    let c = count.read_count(&rec[off..], little).unwrap_or(0) as usize;
+                    // walk_record has checked this count and its items.
+                    let c = count
+                        .read_count(&rec[off..], little)
+                        .and_then(|c| usize::try_from(c).ok())
+                        .unwrap_or(0);
                     off += count.size() + c * item.size();
                 }
             }
@@ -332,83 +375,136 @@ fn read_binary(
         points.push(p);
         pos += len;
     }
-    Ok(points)
+    Ok((points, pos))
 }
 
+/// Read an ascii body line by line: each record of each element is one line
+/// with exactly the values its properties declare (a list: its length, then
+/// that many items), as the PLY format defines it and as PCL reads it.
+/// Reading the values as one stream instead would take a row of 2 values
+/// and the next row's first as one point, and shift every point after it.
 fn read_ascii(
+    head: &[u8],
     body: &[u8],
-    before: &[Element],
-    vertex: &Element,
+    elements: &[Element],
+    vi: usize,
     n: usize,
     xyz: [usize; 3],
+    limits: &ReadLimits,
 ) -> Result<Vec<[f32; 3]>> {
-    let text = match std::str::from_utf8(body) {
-        Ok(t) => t,
-        Err(e) => {
-            // Allow trailing garbage only after a valid prefix; report where it broke.
-            return err(format!(
-                "ascii body is not text (invalid byte at offset {})",
-                e.valid_up_to()
-            ));
-        }
+    let text = ascii_text(head, body, limits).map_err(Error::Ply)?;
+    let mut rows = AsciiRows::new(head, text);
+    let mut values = Vec::new();
+    // Each vertex needs at least two bytes per property ("0 "), so this bounds
+    // the allocation by the file size even when the header lies.
+    let vertex = &elements[vi];
+    let mut points = Vec::with_capacity(n.min(body.len() / (2 * vertex.props.len().max(1)) + 1));
+    // Read leniently, nothing after the vertices is looked at.
+    let last = if limits.lenient {
+        vi
+    } else {
+        elements.len() - 1
     };
-    let mut tokens = text.split_ascii_whitespace();
-    let mut next = |what: &dyn Fn() -> String| -> Result<&str> {
-        tokens
-            .next()
-            .ok_or_else(|| Error::Ply(format!("truncated: the body ends in {}", what())))
-    };
-    let parse_count = |t: &str, what: &dyn Fn() -> String| -> Result<usize> {
-        t.parse::<f64>()
-            .ok()
-            .filter(|v| *v >= 0.0 && v.fract() == 0.0 && *v < 1e9)
-            .map(|v| v as usize)
-            .ok_or_else(|| Error::Ply(format!("bad list length {t:?} in {}", what())))
-    };
-    for el in before {
-        // A record of no properties takes no tokens: skipping a claimed
-        // 10^13 of them must not loop (found by the fuzzer).
+    for (ei, el) in elements[..=last].iter().enumerate() {
+        // A record of no properties is a line of no values, which the rows
+        // skip as blank: skipping a claimed 10^13 of them must not loop
+        // (found by the fuzzer).
         if el.props.is_empty() {
             continue;
         }
         for r in 0..el.count {
-            let what = || format!("element {} record {r}", el.name);
-            for p in &el.props {
-                let t = next(&what)?;
-                if let PropKind::List { .. } = p.kind {
-                    for _ in 0..parse_count(t, &what)? {
-                        next(&what)?;
-                    }
-                }
+            let Some(line) = rows.next_row(&mut values) else {
+                return err(format!(
+                    "truncated: the body ends in element {} record {r} of {}",
+                    el.name, el.count
+                ));
+            };
+            let p = ascii_record(&values, el, xyz).map_err(|(e, short)| {
+                // A short last row is where a cut file ends.
+                let cut = if short && rows.at_end() {
+                    "truncated: "
+                } else {
+                    ""
+                };
+                Error::Ply(format!(
+                    "{cut}line {line}: {e} (element {} record {r} of {})",
+                    el.name, el.count
+                ))
+            })?;
+            if ei == vi {
+                points.push(p);
             }
         }
     }
-    // Each vertex needs at least two bytes per property ("0 "), so this bounds
-    // the allocation by the file size even when the header lies.
-    let mut points = Vec::with_capacity(n.min(body.len() / (2 * vertex.props.len().max(1)) + 1));
-    for r in 0..n {
-        let what = || format!("vertex {r} of {n}");
-        let mut p = [0f32; 3];
-        for (i, prop) in vertex.props.iter().enumerate() {
-            let t = next(&what)?;
-            match prop.kind {
-                PropKind::Scalar(_) => {
-                    if let Some(k) = xyz.iter().position(|&x| x == i) {
-                        p[k] = parse_f32(t).ok_or_else(|| {
-                            Error::Ply(format!("vertex {r}: {t:?} is not a number"))
-                        })?;
-                    }
-                }
-                PropKind::List { .. } => {
-                    for _ in 0..parse_count(t, &what)? {
-                        next(&what)?;
-                    }
-                }
-            }
-        }
-        points.push(p);
-    }
+    rows.check_end("the last element the header declares", limits)
+        .map_err(Error::Ply)?;
     Ok(points)
+}
+
+/// One ascii record: checks the number of values against the properties;
+/// the x, y, z found (meaningful for vertices only), or what is wrong and
+/// whether the row was short.
+fn ascii_record(
+    values: &[&str],
+    el: &Element,
+    xyz: [usize; 3],
+) -> std::result::Result<[f32; 3], (String, bool)> {
+    // The values a short row needed: `at` taken, one per property from
+    // `from` on (a list: its length at least; exact when none is left).
+    let short = |at: usize, from: usize| {
+        let rest = &el.props[from..];
+        let lists = rest.iter().any(|p| matches!(p.kind, PropKind::List { .. }));
+        let want = at.saturating_add(rest.len());
+        let want = if lists {
+            format!("at least {want}")
+        } else {
+            want.to_string()
+        };
+        (
+            format!("{} values where the header declares {want}", values.len()),
+            true,
+        )
+    };
+    let mut p = [0f32; 3];
+    let mut at = 0usize;
+    for (i, prop) in el.props.iter().enumerate() {
+        let Some(&t) = values.get(at) else {
+            return Err(short(at, i));
+        };
+        at += 1;
+        match prop.kind {
+            PropKind::Scalar(_) => {
+                if let Some(k) = xyz.iter().position(|&x| x == i) {
+                    p[k] = parse_f32(t).ok_or_else(|| (format!("{t:?} is not a number"), false))?;
+                }
+            }
+            PropKind::List { .. } => {
+                let len =
+                    parse_count(t).ok_or_else(|| (format!("bad list length {t:?}"), false))?;
+                at = at.saturating_add(len);
+                if at > values.len() {
+                    return Err(short(at, i + 1));
+                }
+            }
+        }
+    }
+    if at != values.len() {
+        return Err((
+            format!("{} values where the header declares {at}", values.len()),
+            false,
+        ));
+    }
+    Ok(p)
+}
+
+/// A list length written in ascii ("3", or "3.0" by some writers).
+fn parse_count(t: &str) -> Option<usize> {
+    let v = t.parse::<f64>().ok()?;
+    if v >= 0.0 && v.fract() == 0.0 && v < 1e9 {
+        usize::try_from(v as u64).ok()
+    } else {
+        None
+    }
 }
 
 /// Parse an ascii number as f32, accepting "nan" and "inf" spellings.

@@ -115,7 +115,10 @@ pub fn parse(text: &str) -> Result<Poses> {
 fn parse_csv(rows: &[(usize, &str)]) -> Result<Poses> {
     let mut poses = Vec::with_capacity(rows.len());
     for (i, &(lineno, line)) in rows.iter().enumerate() {
-        let cells: Vec<&str> = line.split(',').map(|c| c.trim()).collect();
+        // One CSV module for every CSV: a name may be quoted and hold commas.
+        let cells =
+            super::csv::parse_line(line, lineno).map_err(|e| Error::Poses(e.to_string()))?;
+        let cells: Vec<&str> = cells.iter().map(|c| c.trim()).collect();
         if cells.len() < 3 {
             return err(format!("line {lineno}: CSV rows need name,x,y[,z]"));
         }

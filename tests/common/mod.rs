@@ -4,7 +4,7 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-pub const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/real");
+pub const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
 
 pub fn rng(seed: u64) -> ChaCha8Rng {
     ChaCha8Rng::seed_from_u64(seed)
@@ -120,7 +120,7 @@ pub fn rotate_points(points: &[[f32; 3]], r: &[[f64; 3]; 3]) -> Vec<[f32; 3]> {
         .collect()
 }
 
-/// Read a real file by its path under shared/data/real.
+/// Read a real file by its path under tests/data/real.
 pub fn real(rel: &str) -> Vec<u8> {
     std::fs::read(format!("{REAL}/{rel}")).unwrap_or_else(|e| panic!("{REAL}/{rel}: {e}"))
 }

@@ -8,27 +8,27 @@
 pub const PARITY_FILES: [(&str, &[u8]); 6] = [
     (
         "scan_000.bin",
-        include_bytes!("../../../shared/data/real/ouster_os0_sequence/scan_000.bin"),
+        include_bytes!("../data/real/ouster_os0_sequence/scan_000.bin"),
     ),
     (
         "scan_005.bin",
-        include_bytes!("../../../shared/data/real/ouster_os0_sequence/scan_005.bin"),
+        include_bytes!("../data/real/ouster_os0_sequence/scan_005.bin"),
     ),
     (
         "scan_009.bin",
-        include_bytes!("../../../shared/data/real/ouster_os0_sequence/scan_009.bin"),
+        include_bytes!("../data/real/ouster_os0_sequence/scan_009.bin"),
     ),
     (
         "room_scan1.pcd",
-        include_bytes!("../../../shared/data/real/pcl_room/room_scan1.pcd"),
+        include_bytes!("../data/real/pcl_room/room_scan1.pcd"),
     ),
     (
         "room_scan2.pcd",
-        include_bytes!("../../../shared/data/real/pcl_room/room_scan2.pcd"),
+        include_bytes!("../data/real/pcl_room/room_scan2.pcd"),
     ),
     (
         "251370668.pcd",
-        include_bytes!("../../../shared/data/real/velodyne_pair/251370668.pcd"),
+        include_bytes!("../data/real/velodyne_pair/251370668.pcd"),
     ),
 ];
 

@@ -6,7 +6,7 @@ import { join, resolve } from 'node:path';
 import { serve } from '../../scripts/serve.mjs';
 
 export const ROOT = resolve(new URL('../..', import.meta.url).pathname);
-export const REAL = resolve(ROOT, '../shared/data/real');
+export const REAL = resolve(ROOT, 'tests/data/real');
 export const ARTIFACTS = join(ROOT, 'test-artifacts');
 mkdirSync(ARTIFACTS, { recursive: true });
 

@@ -7,6 +7,7 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 
 include!("../common/parity_case.rs");
+include!("../common/bad_corpus.rs");
 
 fn message(e: JsError) -> String {
     let v: JsValue = e.into();
@@ -218,4 +219,23 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(e.contains("few") && e.contains("one, many"), "{e}");
     // Still usable after the errors.
     assert_eq!(labels_of(&set.kmeans(2, "stride", 0).unwrap()).len(), 6);
+}
+
+/// The corpus of damaged scans gives, in wasm32, exactly the messages the
+/// native test (tests/bad_files.rs) checks: strict through the JS API's
+/// readScan (a JS Error), lenient through the core compiled to wasm32.
+#[wasm_bindgen_test]
+fn damaged_files_give_the_native_messages() {
+    let wrong = bad_mismatches(|bytes, name, lenient| {
+        if lenient {
+            let limits = placecat::io::ReadLimits {
+                lenient,
+                ..Default::default()
+            };
+            bad_outcome(placecat::io::read_scan_named(bytes, name, &limits).map(|c| c.points.len()))
+        } else {
+            bad_outcome(read_scan(bytes, name).map(|s| s.count()).map_err(message))
+        }
+    });
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }

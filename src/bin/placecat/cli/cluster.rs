@@ -1,10 +1,11 @@
 //! `placecat cluster`, `placecat evaluate`, `placecat sweep`, `placecat simulate`.
 
-use super::describe::{csv_cells, DescriptorsFile};
+use super::describe::DescriptorsFile;
 use super::progress;
 use placecat::cluster::{
     hkmeans::HkMeansParams, DbscanParams, KMeansParams, KMedoidsParams, Seeding,
 };
+use placecat::io::csv;
 use placecat::io::write::{self, PlyEncoding};
 use placecat::sim::{SceneKind, SimParams, Simulation};
 use placecat::{Error, Result};
@@ -115,24 +116,22 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
     Ok(ExitCode::SUCCESS)
 }
 
-/// Read a `file,label` CSV (header optional) into (basename, label) pairs.
+/// Read a `file,label` CSV (header optional) into (basename, label) pairs,
+/// with the core's CSV reader (RFC 4180: the page's export, spreadsheets).
 pub fn read_truth(path: &Path) -> Result<Vec<(String, String)>> {
     let name = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&name))?;
     let mut rows = Vec::new();
-    for (i, line) in text.lines().enumerate() {
-        let line = line.trim();
+    for rec in csv::parse(&text).map_err(|e| e.in_file(&name))? {
         // A header: labels.csv's file,label or the page's file,category.
-        if line.is_empty() || (i == 0 && line.to_ascii_lowercase().starts_with("file,")) {
+        let first = rec.cells[0].trim().to_ascii_lowercase();
+        if rec.line == 1 && first == "file" && rec.cells.len() > 1 {
             continue;
         }
-        let cells = csv_cells(line).ok_or_else(|| {
-            Error::Csv(format!("line {}: a quote is not closed", i + 1)).in_file(&name)
-        })?;
-        let Ok([f, l]) = <[String; 2]>::try_from(cells) else {
+        let Ok([f, l]) = <[String; 2]>::try_from(rec.cells) else {
             return Err(Error::Csv(format!(
                 "line {}: expected two cells, file,label (quote a name that holds a comma)",
-                i + 1
+                rec.line
             ))
             .in_file(&name));
         };

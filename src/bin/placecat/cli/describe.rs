@@ -3,6 +3,7 @@
 use super::progress;
 use placecat::collection::merge_params;
 use placecat::descriptor::DescriptorParams;
+use placecat::io::csv::quote;
 use placecat::io::{is_scan_name, read_path, ReadLimits};
 use placecat::{Collection, Descriptor, Error, Result};
 use rayon::prelude::*;
@@ -162,42 +163,11 @@ pub fn describe_files(
     Ok(results)
 }
 
-/// CSV cell: quoted when it holds a comma, quote or newline.
-pub fn csv_cell(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
-
-/// The cells of one CSV line, unquoting as [`csv_cell`] (and the page's
-/// export) quote; None when a quote is left open.
-pub fn csv_cells(line: &str) -> Option<Vec<String>> {
-    let mut cells = vec![String::new()];
-    let mut quoted = false;
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        let cell = cells.last_mut().expect("one cell at least");
-        match (c, quoted) {
-            ('"', false) if cell.is_empty() => quoted = true,
-            ('"', true) if chars.peek() == Some(&'"') => {
-                chars.next();
-                cell.push('"');
-            }
-            ('"', true) => quoted = false,
-            (',', false) => cells.push(String::new()),
-            _ => cell.push(c),
-        }
-    }
-    (!quoted).then_some(cells)
-}
-
 pub fn distances(descriptors: &Path, output: Option<&Path>) -> Result<ExitCode> {
     // The matrix is the output here, so it is built at any size.
     let set = DescriptorsFile::load(descriptors)?;
     let m = placecat::delta_matrix(set.descriptors(), set.params().into())?;
-    let names: Vec<String> = set.names().iter().map(|n| csv_cell(n)).collect();
+    let names: Vec<String> = set.names().iter().map(|n| quote(n).into_owned()).collect();
     let mut out = String::from("file");
     for n in &names {
         out.push(',');
@@ -213,23 +183,4 @@ pub fn distances(descriptors: &Path, output: Option<&Path>) -> Result<ExitCode> 
     }
     super::write_out(output, &out)?;
     Ok(ExitCode::SUCCESS)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn csv_cells_undo_csv_cell() {
-        for row in [
-            vec!["a.ply", "room"],
-            vec!["a,b.ply", "kitchen, 2nd \"floor\""],
-            vec!["", "x"],
-        ] {
-            let line: Vec<String> = row.iter().map(|c| csv_cell(c)).collect();
-            assert_eq!(csv_cells(&line.join(",")).unwrap(), row);
-        }
-        assert_eq!(csv_cells("a,b,c").unwrap(), ["a", "b", "c"]);
-        assert_eq!(csv_cells("a,\"open"), None);
-    }
 }

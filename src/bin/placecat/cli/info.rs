@@ -5,8 +5,12 @@ use serde_json::json;
 use std::path::Path;
 use std::process::ExitCode;
 
-pub fn run(file: &Path, as_json: bool) -> placecat::Result<ExitCode> {
-    let cloud = read_path(file, &ReadLimits::default())?;
+pub fn run(file: &Path, as_json: bool, lenient: bool) -> placecat::Result<ExitCode> {
+    let limits = ReadLimits {
+        lenient,
+        ..Default::default()
+    };
+    let cloud = read_path(file, &limits)?;
     let pts = &cloud.points;
     let mut sum = [0f64; 3];
     for p in pts {

@@ -37,6 +37,8 @@ enum Command {
         /// Print one JSON object (format, count, first, last, sum).
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        lenient: Lenient,
     },
     /// Compute the NDT-histogram descriptor of every scan.
     Describe {
@@ -135,6 +137,20 @@ struct Limits {
     /// Refuse files larger than this many bytes.
     #[arg(long, default_value_t = placecat::io::ReadLimits::default().max_bytes)]
     max_bytes: usize,
+    #[command(flatten)]
+    lenient: Lenient,
+}
+
+/// How strictly a file's body must match its header.
+#[derive(clap::Args)]
+struct Lenient {
+    /// Read files whose body does not match their header (bytes after the
+    /// data that are not padding, PLY elements after the vertices that do
+    /// not parse, a PCD WIDTH x HEIGHT that is not POINTS): the points the
+    /// header declares are read and nothing after them is checked. Such
+    /// files are damaged; their points may be wrong.
+    #[arg(long)]
+    lenient: bool,
 }
 
 impl From<Limits> for placecat::io::ReadLimits {
@@ -142,6 +158,7 @@ impl From<Limits> for placecat::io::ReadLimits {
         placecat::io::ReadLimits {
             max_points: l.max_points,
             max_bytes: l.max_bytes,
+            lenient: l.lenient.lenient,
         }
     }
 }
@@ -149,7 +166,11 @@ impl From<Limits> for placecat::io::ReadLimits {
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Info { file, json } => info::run(&file, json),
+        Command::Info {
+            file,
+            json,
+            lenient,
+        } => info::run(&file, json, lenient.lenient),
         Command::Describe {
             preset,
             params,

@@ -3,7 +3,8 @@
 //! (also for models exported from the page).
 
 use super::cluster::read_truth;
-use super::describe::{csv_cell, describe_files, expand, DescriptorsFile};
+use super::describe::{describe_files, expand, DescriptorsFile};
+use placecat::io::csv::quote;
 use placecat::io::ReadLimits;
 use placecat::model::LabelledModel;
 use placecat::{Error, Result};
@@ -86,8 +87,8 @@ pub fn classify(
         writeln!(
             out,
             "{},{},{},{}",
-            csv_cell(&described.path),
-            csv_cell(&c.name),
+            quote(&described.path),
+            quote(&c.name),
             c.distance,
             c.relative
         )

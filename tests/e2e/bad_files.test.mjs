@@ -1,0 +1,48 @@
+// The regression corpus of damaged scans (tests/data/bad) through the page's
+// file input, in one batch with good scans: each damaged file is listed as
+// an error with exactly the message in expected.tsv (the one the native and
+// wasm tests check), and the good ones are described and clustered.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { start, afterRun, ARTIFACTS, ROOT, REAL } from './harness.mjs';
+
+const BAD = join(ROOT, 'tests/data/bad');
+// file<TAB>strict<TAB>lenient; the page reads strictly.
+const rows = readFileSync(join(BAD, 'expected.tsv'), 'utf8')
+  .split('\n')
+  .filter((l) => l && !l.startsWith('#'))
+  .map((l) => l.split('\t'));
+const damaged = rows.filter(([, strict]) => !/^\d+ points$/.test(strict));
+const readable = rows.filter(([, strict]) => /^\d+ points$/.test(strict));
+const real = ['ouster_os0_sequence/scan_000.bin', 'ouster_os0_sequence/scan_005.bin', 'pcl_room/room_scan1.pcd', 'velodyne_pair/251370668.pcd'];
+
+let h;
+before(async () => { h = await start(); });
+after(async () => { await h?.close(); });
+
+test('damaged files are listed as errors naming the file, the rest of the batch is described', async () => {
+  assert.ok(damaged.length >= 10, `${damaged.length} damaged files in the table`);
+  const files = [...rows.map(([f]) => join(BAD, f)), ...real.map((f) => join(REAL, f))];
+  await afterRun(h.page, () => h.page.setInputFiles('#files', files));
+  const errors = await h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent));
+  for (const [file, strict] of damaged) {
+    assert.ok(errors.includes(strict), `${file}: want the error\n  ${strict}\namong\n  ${errors.join('\n  ')}`);
+  }
+  // The corpus's readable files (padding, CRLF) are not refused by the
+  // reader; they are too small for a descriptor, and the page says so.
+  for (const [file] of readable) {
+    const mine = errors.filter((e) => e.startsWith(`${file}:`));
+    assert.ok(mine.every((e) => /no descriptor/.test(e)), `${file} refused: ${mine}`);
+  }
+  assert.equal(errors.filter((e) => damaged.some(([f]) => e.startsWith(`${f}:`))).length, damaged.length, 'one error per damaged file');
+  // Every real scan is described and clustered despite the bad ones.
+  const total = rows.length + real.length;
+  assert.match(await h.page.textContent('#progress-text'), new RegExp(`^${total} / ${total} scans`));
+  const described = total - errors.length;
+  assert.ok(described >= real.length, `${described} described`);
+  assert.match(await h.page.textContent('#cluster-status'), new RegExp(`from ${described} scans`));
+  await h.page.screenshot({ path: join(ARTIFACTS, 'bad-files.png') });
+  assert.deepEqual(h.problems, []);
+});
