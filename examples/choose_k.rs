@@ -76,6 +76,18 @@ fn simulate(name: String, sp: SimParams, params: DescriptorParams) -> Set {
     }
 }
 
+/// The K >= 2 with the largest finite score.
+fn argmax2(scores: &[(usize, f64)]) -> usize {
+    scores
+        .iter()
+        .filter(|s| s.0 >= 2 && s.1.is_finite())
+        .fold(None::<(usize, f64)>, |b, &s| match b {
+            Some(b) if b.1 >= s.1 => Some(b),
+            _ => Some(s),
+        })
+        .map_or(1, |b| b.0)
+}
+
 /// One K chosen: (found?, K, accuracy, ARI).
 type Outcome = (bool, usize, f64, f64);
 
@@ -109,6 +121,38 @@ fn run(set: &Set, seeds: &[u64]) -> Vec<(String, String, Vec<Outcome>)> {
                     if let Ok(c) = s.choose(rule) {
                         out.push((cname.into(), rule.name().into(), outcome(c.k)));
                     }
+                }
+                // Other K = 1 tests: Kaufman & Rousseeuw's silhouette bounds.
+                let sil_best = s
+                    .silhouette
+                    .iter()
+                    .flatten()
+                    .copied()
+                    .fold(f64::NEG_INFINITY, f64::max);
+                for bound in [0.25, 0.5] {
+                    for rule in [Rule::GapSilhouette, Rule::HeightGap, Rule::CalinskiHarabasz] {
+                        if let Ok(c) = s.choose(rule) {
+                            let k = if sil_best < bound {
+                                1
+                            } else {
+                                argmax2(&c.scores)
+                            };
+                            let name =
+                                format!("{} (K=1: sil<{bound})", rule.name().replace("gap_", ""));
+                            out.push((cname.into(), name, outcome(k)));
+                        }
+                    }
+                }
+                if seed == 0 {
+                    eprintln!(
+                        "  {} {cname}: sil {:?} gap-margin {:.3}",
+                        set.name,
+                        s.silhouette
+                            .iter()
+                            .map(|x| x.map(|v| (v * 100.0).round() / 100.0))
+                            .collect::<Vec<_>>(),
+                        s.one_category_margin().unwrap_or(f64::NAN)
+                    );
                 }
                 out.push((
                     cname.into(),
