@@ -11,7 +11,7 @@
 //! trajectory (default: the simulator's own count). Writes a markdown
 //! table to stdout and, given a path, to that file.
 
-use placecat::cluster::choose_k::{scores, ChooseKParams, Clusterer, Rule, Scores};
+use placecat::cluster::choose_k::{best_k, scores, ChooseKParams, Clusterer, Rule, Scores};
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
 use placecat::eval::evaluate;
@@ -76,18 +76,6 @@ fn simulate(name: String, sp: SimParams, params: DescriptorParams) -> Set {
     }
 }
 
-/// The K >= 2 with the largest finite score.
-fn argmax2(scores: &[(usize, f64)]) -> usize {
-    scores
-        .iter()
-        .filter(|s| s.0 >= 2 && s.1.is_finite())
-        .fold(None::<(usize, f64)>, |b, &s| match b {
-            Some(b) if b.1 >= s.1 => Some(b),
-            _ => Some(s),
-        })
-        .map_or(1, |b| b.0)
-}
-
 /// One K chosen: (found?, K, accuracy, ARI).
 type Outcome = (bool, usize, f64, f64);
 
@@ -123,19 +111,14 @@ fn run(set: &Set, seeds: &[u64]) -> Vec<(String, String, Vec<Outcome>)> {
                     }
                 }
                 // Other K = 1 tests: Kaufman & Rousseeuw's silhouette bounds.
-                let sil_best = s
-                    .silhouette
-                    .iter()
-                    .flatten()
-                    .copied()
-                    .fold(f64::NEG_INFINITY, f64::max);
+                let sil_best = s.best_silhouette();
                 for bound in [0.25, 0.5] {
                     for rule in [Rule::GapSilhouette, Rule::HeightGap, Rule::CalinskiHarabasz] {
                         if let Ok(c) = s.choose(rule) {
                             let k = if sil_best < bound {
                                 1
                             } else {
-                                argmax2(&c.scores)
+                                best_k(&c.scores).unwrap_or(1)
                             };
                             let name =
                                 format!("{} (K=1: sil<{bound})", rule.name().replace("gap_", ""));

@@ -3,7 +3,7 @@
 
 mod common;
 use common::*;
-use placecat::cluster::choose_k::{choose_k, ChooseKParams, Clusterer, DEFAULT_RULE};
+use placecat::cluster::choose_k::{choose_k, ChooseKParams, Clusterer, Rule, DEFAULT_RULE};
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::{HierarchicalKMeans, KMeansParams, Space};
 use placecat::descriptor::Summary;
@@ -92,7 +92,7 @@ fn one_tight_group_gives_one() {
 }
 
 #[test]
-fn a_tight_and_a_far_wider_group_give_two() {
+fn a_tight_and_a_far_wider_group_give_two_for_the_tree() {
     let mut r = rng(3);
     // Eight times the spread. The tree's cut keeps the wide group whole.
     // k-means splits it at K = 3 and the gap statistic's 1-SE rule takes
@@ -141,4 +141,45 @@ fn four_kitti_scans_of_two_places_give_two() {
         "kitti00/000199.bin",
     ];
     assert_eq!(real_k(&files, DescriptorParams::outdoor()), 2);
+}
+
+#[test]
+fn sampled_silhouette_without_a_matrix_chooses_as_the_exact_one() {
+    // 3 groups of 40; the silhouette sample (50 scans) is far below n.
+    let mut r = rng(4);
+    let mut d = group(&mut r, &proto(0), 0.2, 40);
+    d.extend(group(&mut r, &proto(2), 0.2, 40));
+    d.extend(group(&mut r, &proto(4), 0.2, 40));
+    let space = Space::new(&d, DistanceOptions::default()).unwrap();
+    let km = KMeansParams::new(1);
+    let small = ChooseKParams {
+        silhouette_sample: 50,
+        ..Default::default()
+    };
+    let exact = choose_k(
+        &space,
+        Some(&space.matrix()),
+        Clusterer::KMeans(&km),
+        &small,
+        DEFAULT_RULE,
+    )
+    .unwrap();
+    let sampled = choose_k(&space, None, Clusterer::KMeans(&km), &small, DEFAULT_RULE).unwrap();
+    assert_eq!((exact.k, sampled.k), (3, 3));
+    // The one-category statistic is the best silhouette, both well above 0.5.
+    let (a, b) = (exact.one_category.unwrap(), sampled.one_category.unwrap());
+    assert!(a > 0.5 && b > 0.5 && (a - b).abs() < 0.1, "{a} vs {b}");
+}
+
+#[test]
+fn bad_requests_are_errors() {
+    let mut r = rng(5);
+    let d = group(&mut r, &proto(0), 0.2, 5);
+    let space = Space::new(&d, DistanceOptions::default()).unwrap();
+    let km = KMeansParams::new(1);
+    let p = ChooseKParams::default();
+    let e = choose_k(&space, None, Clusterer::KMeans(&km), &p, Rule::HeightGap).unwrap_err();
+    assert!(e.to_string().contains("needs a tree"), "{e}");
+    let zero = ChooseKParams { max_k: 0, ..p };
+    assert!(choose_k(&space, None, Clusterer::KMeans(&km), &zero, DEFAULT_RULE).is_err());
 }

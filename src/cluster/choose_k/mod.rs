@@ -327,8 +327,8 @@ fn silhouettes(
         .collect()
 }
 
-/// The K in 2..=k_max with the largest finite score (the smaller K on ties).
-fn argmax(scores: &[(usize, f64)]) -> Option<usize> {
+/// The K >= 2 with the largest finite score (the smaller K on ties).
+pub fn best_k(scores: &[(usize, f64)]) -> Option<usize> {
     scores
         .iter()
         .filter(|s| s.0 >= 2 && s.1.is_finite())
@@ -346,6 +346,15 @@ impl Scores {
             .collect()
     }
 
+    /// The largest mean silhouette over K >= 2 (-inf with none).
+    pub fn best_silhouette(&self) -> f64 {
+        self.silhouette
+            .iter()
+            .flatten()
+            .copied()
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
+
     /// Gap(1) - (Gap(2) - s_2); None with one K tried.
     pub fn one_category_margin(&self) -> Option<f64> {
         (self.gap.len() >= 2).then(|| self.gap[0] - (self.gap[1] - self.gap_s[1]))
@@ -358,7 +367,7 @@ impl Scores {
         let (k, scores, one_category) = match rule {
             Rule::Silhouette => {
                 let s = Self::defined(self.silhouette.iter().copied());
-                let best = argmax(&s);
+                let best = best_k(&s);
                 let k = match best {
                     Some(k) if s.iter().any(|x| x.0 == k && x.1 >= NO_STRUCTURE_SILHOUETTE) => k,
                     _ => 1,
@@ -370,12 +379,7 @@ impl Scores {
                 (gap::one_se_choice(&self.gap, &self.gap_s), s, margin)
             }
             Rule::SilhouetteGap => {
-                let best = self
-                    .silhouette
-                    .iter()
-                    .flatten()
-                    .copied()
-                    .fold(f64::NEG_INFINITY, f64::max);
+                let best = self.best_silhouette();
                 let s = Self::defined(self.gap.iter().map(|&g| Some(g)));
                 let k = if best < REASONABLE_SILHOUETTE || self.gap.len() < 2 {
                     1
@@ -393,7 +397,7 @@ impl Scores {
                         None => return invalid("the height_gap rule needs a tree, not k-means"),
                     },
                 };
-                let k = if one { 1 } else { argmax(&s).unwrap_or(1) };
+                let k = if one { 1 } else { best_k(&s).unwrap_or(1) };
                 (k, s, margin)
             }
         };
