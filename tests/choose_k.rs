@@ -180,6 +180,12 @@ fn bad_requests_are_errors() {
     let p = ChooseKParams::default();
     let e = choose_k(&space, None, Clusterer::KMeans(&km), &p, Rule::HeightGap).unwrap_err();
     assert!(e.to_string().contains("needs a tree"), "{e}");
+    // A tree of other scans.
+    let other = Space::new(&d[..4], DistanceOptions::default()).unwrap();
+    let hk = HkMeansParams::new(0);
+    let tree = HierarchicalKMeans::fit_without_matrix(&other, &hk).unwrap();
+    let e = choose_k(&space, None, Clusterer::Tree(&tree, &hk), &p, DEFAULT_RULE).unwrap_err();
+    assert!(e.to_string().contains("a tree of 4"), "{e}");
     let zero = ChooseKParams { max_k: 0, ..p };
     assert!(choose_k(&space, None, Clusterer::KMeans(&km), &zero, DEFAULT_RULE).is_err());
 }

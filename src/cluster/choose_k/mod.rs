@@ -239,13 +239,15 @@ pub fn scores(
     if params.max_k == 0 || params.references == 0 || params.reference_size == 0 {
         return invalid("max_k, references and reference_size must be at least 1");
     }
-    if let (Some(m), Clusterer::Tree(t, _)) = (matrix, clusterer) {
-        if m.n != n || t.n != n {
-            return Err(crate::Error::Mismatch(format!(
-                "{n} scans, a {} x {} matrix and a tree of {}",
-                m.n, m.n, t.n
-            )));
-        }
+    let tree_n = match clusterer {
+        Clusterer::Tree(t, _) => t.n,
+        Clusterer::KMeans(_) => n,
+    };
+    let matrix_n = matrix.map_or(n, |m| m.n);
+    if tree_n != n || matrix_n != n {
+        return Err(crate::Error::Mismatch(format!(
+            "{n} scans, a Delta matrix of {matrix_n} and a tree of {tree_n}"
+        )));
     }
     let k_max = params.max_k.min(n);
     let labels = partitions(space, clusterer, k_max, false)?;
