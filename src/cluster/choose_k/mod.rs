@@ -22,7 +22,8 @@
 //! themselves (as scikit-learn's `sample_size`), an s x s matrix (4 MB at
 //! 1,000). Dispersions use category centres (O(n) per K); the gap
 //! statistic's reference sets hold min(n, `reference_size`) scans each, one
-//! at a time. So memory is O(n + s^2 + reference_size), never n x n.
+//! at a time. With the labels of every K tried, memory is
+//! O(n * max_k + s^2 + reference_size), never n x n.
 //!
 //! The default, [`Rule::SilhouetteGap`] (chosen on simulator seeds 1-3
 //! before the test seeds were run; figures in docs/choose_k.md):
@@ -37,10 +38,11 @@
 //! favourite K = 2 gave 0.29, the oracle K 0.72), but its own test of
 //! K = 1 failed on real data both ways: the 10 Ouster scans of one place
 //! drift with the moving sensor, a continuum its permutation reference
-//! lacks (3 categories in 8 of 10 trees), and on the 18 real files of five
+//! lacks (2 or more categories in 8 of 10 trees), and on the 18 real files of five
 //! places the size factor of Delta, which the reference keeps, hides the
 //! places (1 category). The silhouette bound says 1 for the Ouster scans
-//! (best silhouette 0.37-0.40) and the two same-place pairs, and the mix
+//! (best silhouette 0.35-0.40; two scans have silhouette 0 at K = 2, so
+//! any two scans give 1), and the mix
 //! of five places is then split by the gap statistic into 4 (KITTI's two
 //! places as one) or 5. The cost: on the old outdoor strip (best
 //! silhouettes 0.42-0.51) it says 1 in 18 of 30 trees. The choice of 0.5
