@@ -5,6 +5,7 @@
 //!
 //! Labels are `i32`: 0, 1, ... for categories, -1 for DBSCAN noise.
 
+pub mod choose_k;
 pub mod dbscan;
 pub mod hkmeans;
 pub mod kmeans;
