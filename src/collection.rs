@@ -4,6 +4,7 @@
 //! the JS API both call it, so the parameter merge, the matrix policy and
 //! the name handling are written once, here.
 
+use crate::cluster::choose_k::{self, Choice, ChooseKParams, Clusterer, DEFAULT_RULE};
 use crate::cluster::hkmeans::HkMeansParams;
 use crate::cluster::{
     medoids, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams, KMeansResult,
@@ -255,6 +256,26 @@ impl Collection {
             HierarchicalKMeans::fit(space, matrix, params)
         } else {
             HierarchicalKMeans::fit_without_matrix(self.space()?, params)
+        }
+    }
+
+    /// How many categories the scans hold, by the default rule of
+    /// [`choose_k`](crate::cluster::choose_k) (one category when they are
+    /// all alike): for `tree`'s cut when a tree is given (built with
+    /// `hk`), else for k-means with `kmeans` (its `k` is ignored). The
+    /// exact silhouette on the Delta matrix where the set has one, else a
+    /// sampled one; no n x n matrix is built above [`MATRIX_LIMIT`].
+    pub fn choose_categories(
+        &mut self,
+        clusterer: Clusterer,
+        params: &ChooseKParams,
+    ) -> Result<Choice> {
+        self.check_nonempty()?;
+        if self.uses_matrix() {
+            let (space, matrix) = self.space_and_matrix()?;
+            choose_k::choose_k(space, Some(matrix), clusterer, params, DEFAULT_RULE)
+        } else {
+            choose_k::choose_k(self.space()?, None, clusterer, params, DEFAULT_RULE)
         }
     }
 

@@ -7,6 +7,7 @@
 //! plain JS number; u64 would demand a BigInt). The pipeline itself —
 //! parameter merge, matrix policy, names — is [`crate::Collection`].
 
+use crate::cluster::choose_k;
 use crate::cluster::hkmeans::HkMeansParams;
 use crate::cluster::{self, DbscanParams, KMeansParams, KMedoidsParams, Seeding};
 use crate::collection::{category_names, merge_params, Collection, MATRIX_LIMIT};

@@ -644,3 +644,77 @@ fn lenient_reads_a_damaged_file_that_strict_refuses() {
         .unwrap();
     assert!(!String::from_utf8_lossy(&lenient.stderr).contains("does not match the header"));
 }
+
+/// `--categories auto` and `--k auto` (and hkmeans/kmeans given no count):
+/// the number of categories chosen from the data, written as `categories`
+/// with the rule's scores under `choice`. Ten scans of one enclosed place
+/// (Ouster) are one category; the four KITTI scans of two places are two.
+#[test]
+fn auto_categories_follow_the_data() {
+    let dir = tmp("auto");
+    let one_place = dir.join("ouster.json");
+    let two_places = dir.join("kitti.json");
+    for (input, preset, out) in [
+        ("ouster_os0_sequence", "indoor", &one_place),
+        ("kitti00", "outdoor", &two_places),
+    ] {
+        let input = format!("{REAL}/{input}");
+        succeeds(
+            placecat()
+                .args(["describe", "--preset", preset, &input, "-o"])
+                .arg(out),
+        );
+    }
+    let cluster = |d: &std::path::Path, args: &[&str]| -> serde_json::Value {
+        let out = dir.join("out.json");
+        succeeds(
+            placecat()
+                .arg("cluster")
+                .arg(d)
+                .args(args)
+                .arg("-o")
+                .arg(&out),
+        );
+        serde_json::from_slice(&std::fs::read(&out).unwrap()).unwrap()
+    };
+    for args in [
+        &["--method", "hkmeans", "--categories", "auto", "--seed", "0"][..],
+        &["--method", "hkmeans", "--seed", "3"],
+        &["--method", "kmeans", "--k", "auto", "--seeding", "stride"],
+        &["--method", "kmeans"],
+    ] {
+        let v = cluster(&one_place, args);
+        assert_eq!(v["categories"], 1, "{args:?}: {v}");
+        assert!(v["labels"].as_array().unwrap().iter().all(|l| l == 0));
+        assert_eq!(v["choice"]["rule"], "silhouette_gap");
+        assert!(v["choice"]["one_category"].as_f64().unwrap() < 0.5, "{v}");
+        let v = cluster(&two_places, args);
+        assert_eq!(v["categories"], 2, "{args:?}: {v}");
+        // 000094/000095 are one place, 000198/000199 the other.
+        let l = v["labels"].as_array().unwrap();
+        assert!(l[0] == l[1] && l[2] == l[3] && l[0] != l[2], "{v}");
+        assert!(!v["choice"]["scores"].as_array().unwrap().is_empty());
+    }
+    // An explicit count is kept as given, with no choice.
+    let v = cluster(&two_places, &["--method", "hkmeans", "--categories", "3"]);
+    assert_eq!(v["categories"], 3);
+    assert!(v.get("choice").is_none());
+    let e = fails(placecat().arg("cluster").arg(&two_places).args([
+        "--method",
+        "kmedoids",
+        "--k",
+        "auto",
+        "-o",
+        "/dev/null",
+    ]));
+    assert!(e.contains("auto is for kmeans and hkmeans"), "{e}");
+    let e = fails(placecat().arg("cluster").arg(&two_places).args([
+        "--method",
+        "hkmeans",
+        "--categories",
+        "many",
+        "-o",
+        "/dev/null",
+    ]));
+    assert!(e.contains("expected a whole number or auto"), "{e}");
+}

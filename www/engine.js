@@ -159,11 +159,11 @@ export class Engine {
 
   /**
    * The rule's choice for the kept tree (the core's choose_k Choice: k, rule,
-   * scores, one_category), once the wasm API has it; null until then.
-   * @returns {{k: number, rule: string} | null}
+   * scores, one_category).
+   * @returns {{k: number, rule: string, one_category?: number | null} | null}
    */
   #ruleChoice() {
-    return null; // <- the one line to wire, e.g. this.tree.get('tree').chooseK(this.set.get('scans'))
+    return this.set.get('scans').chooseCategories(this.tree.get('tree'));
   }
 
   /** Delta between two scans of the set. @param {number} i @param {number} j @returns {number} */

@@ -80,7 +80,13 @@ export function siteSubsample(xyz, max = SITE_POINTS) {
  * core's `choose_k` Choice): its best score, or no structure for one.
  * @param {{k: number, rule: string}} choice
  */
-export function choiceReason({ k, rule }) {
+export function choiceReason({ k, rule, one_category: best }) {
+  if (rule === 'silhouette_gap' && typeof best === 'number') {
+    const s = best.toFixed(2);
+    return k === 1
+      ? `the scans look like one place (best mean silhouette ${s}, under 0.5)`
+      : `the gap statistic's choice (best mean silhouette ${s})`;
+  }
   const name = rule.replaceAll('_', ' ');
   return k === 1 ? `the ${name} rule finds no structure to split` : `the ${name} rule's best score`;
 }

@@ -6,6 +6,8 @@ use super::*;
 #[wasm_bindgen]
 pub struct ClusterTree {
     pub(super) tree: cluster::Tree,
+    /// What built it: the choice of K builds trees on reference sets alike.
+    pub(super) params: HkMeansParams,
 }
 
 #[wasm_bindgen]

@@ -114,9 +114,33 @@ impl DescriptorSet {
     /// `usesMatrix`): heights of nodes over 1500 scans are then an upper
     /// bound of the diameter.
     pub fn hkmeans(&mut self, seed: u32) -> WasmResult<ClusterTree> {
+        let params = HkMeansParams::new(seed.into());
         Ok(ClusterTree {
-            tree: self.set.hkmeans(&HkMeansParams::new(seed.into()))?,
+            tree: self.set.hkmeans(&params)?,
+            params,
         })
+    }
+    /// How many categories to cut `tree` into, chosen from the data (one
+    /// when the scans are all alike): `{k, rule, scores, one_category}`,
+    /// `scores` the rule's score for each K tried. See the README.
+    #[wasm_bindgen(js_name = chooseCategories, unchecked_return_type = "Choice")]
+    pub fn choose_categories(&mut self, tree: &ClusterTree) -> WasmResult<JsValue> {
+        let how = choose_k::Clusterer::Tree(&tree.tree, &tree.params);
+        to_js(&self.set.choose_categories(how, &Default::default())?)
+    }
+    /// How many categories k-means should make of this set (as
+    /// `chooseCategories`, for `kmeans(k, seeding, seed)`).
+    #[wasm_bindgen(js_name = chooseK, unchecked_return_type = "Choice")]
+    pub fn choose_k(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
+        seed: u32,
+    ) -> WasmResult<JsValue> {
+        let params = KMeansParams::new(1)
+            .seeding(seeding.parse::<Seeding>()?)
+            .seed(seed.into());
+        let how = choose_k::Clusterer::KMeans(&params);
+        to_js(&self.set.choose_categories(how, &Default::default())?)
     }
     /// True when the set is small enough for the n x n Delta matrix.
     #[wasm_bindgen(getter, js_name = usesMatrix)]

@@ -2,7 +2,7 @@
 //! means of [`Space::mean`]), so it needs no n x n matrix: O(n) Delta
 //! evaluations per partition.
 
-use crate::cluster::Space;
+use crate::distance::Space;
 
 /// Sum over scans of the squared Delta to their category's centre, for
 /// labels 0..k (the W_k of Tibshirani et al. 2001 and Calinski-Harabasz,

@@ -18,8 +18,9 @@
 //! scan (W_k / n), so that sets of different sizes compare; each is
 //! clustered as the data were (a tree or k-means with the same parameters).
 
-use crate::cluster::{rng, Space};
 use crate::distance::Prepared;
+use crate::distance::Space;
+use crate::rng::rng;
 use rand::Rng;
 
 /// A reference set of `m` scans drawn from `space` (see the module doc).

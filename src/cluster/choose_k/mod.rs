@@ -56,13 +56,15 @@ mod heights;
 mod silhouette;
 
 use crate::cluster::hkmeans::HkMeansParams;
-use crate::cluster::{HierarchicalKMeans, KMeans, KMeansParams, Space, Tree};
+use crate::cluster::{HierarchicalKMeans, KMeans, KMeansParams, Tree};
 use crate::distance::DistanceMatrix;
+use crate::distance::Space;
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
 
 /// A rule that picks K (see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "snake_case")]
 pub enum Rule {
     Silhouette,
@@ -313,7 +315,7 @@ fn silhouettes(
         (0..n).collect()
     } else {
         let mut s = rand::seq::index::sample(
-            &mut crate::cluster::rng(params.seed),
+            &mut crate::rng::rng(params.seed),
             n,
             params.silhouette_sample.max(2),
         )

@@ -2,6 +2,7 @@
 
 use super::describe::DescriptorsFile;
 use super::progress;
+use placecat::cluster::choose_k::{ChooseKParams, Clusterer};
 use placecat::cluster::{
     hkmeans::HkMeansParams, DbscanParams, KMeansParams, KMedoidsParams, Seeding,
 };
@@ -20,26 +21,63 @@ pub struct ClusterArgs {
     /// kmeans, hkmeans, dbscan, kmedoids.
     #[arg(long)]
     pub method: String,
+    /// kmeans, kmedoids: the number of categories; `auto` (kmeans, the
+    /// default there) chooses it from the data (see `categories` in OUT.json).
     #[arg(long)]
-    pub k: Option<usize>,
+    pub k: Option<Count>,
     /// k-means seeding: random, stride, plusplus.
     #[arg(long, default_value = "plusplus")]
     pub seeding: String,
+    /// Seeds k-means, k-medoids, the tree's 2-means splits and the choice
+    /// of K (its reference sets).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// hkmeans: cut the tree at this height.
     #[arg(long, allow_negative_numbers = true)]
     pub threshold: Option<f32>,
     /// hkmeans: cut the tree where it gives this many categories (its K - 1
-    /// highest splits; of two at one height, the parent's first).
+    /// highest splits; of two at one height, the parent's first); `auto`
+    /// (the default when no --threshold is given) chooses K from the data.
     #[arg(long)]
-    pub categories: Option<usize>,
+    pub categories: Option<Count>,
     /// dbscan: neighbourhood radius (Delta <= eps).
     #[arg(long, allow_negative_numbers = true)]
     pub eps: Option<f32>,
     /// dbscan: neighbours of a core scan, itself included.
     #[arg(long = "min-points")]
     pub min_points: Option<usize>,
+}
+
+/// A number of categories given, or `auto`: chosen from the data by the
+/// core's default rule (`placecat::cluster::choose_k`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Count {
+    /// Chosen from the data.
+    Auto,
+    /// As given.
+    Exactly(usize),
+}
+
+impl std::str::FromStr for Count {
+    type Err = String;
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        match s {
+            "auto" => Ok(Count::Auto),
+            n => n
+                .parse()
+                .map(Count::Exactly)
+                .map_err(|_| format!("expected a whole number or auto, got {n:?}")),
+        }
+    }
+}
+
+/// The choice's fields that OUT.json carries when K was chosen.
+fn choice_json(choice: &placecat::cluster::choose_k::Choice) -> Value {
+    json!({
+        "rule": choice.rule,
+        "scores": choice.scores,
+        "one_category": choice.one_category,
+    })
 }
 
 fn need<T>(v: Option<T>, flag: &str, method: &str) -> Result<T> {
@@ -58,11 +96,23 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
     let mut out = json!({ "files": files, "method": a.method });
     match a.method.as_str() {
         "kmeans" => {
-            let k = need(a.k, "--k", "kmeans")?;
             let seeding: Seeding = a.seeding.parse()?;
-            let r = set.kmeans(&KMeansParams::new(k).seeding(seeding).seed(a.seed))?;
+            let params = |k| KMeansParams::new(k).seeding(seeding).seed(a.seed);
+            let k = match a.k.unwrap_or(Count::Auto) {
+                Count::Exactly(k) => k,
+                Count::Auto => {
+                    let choice = set.choose_categories(
+                        Clusterer::KMeans(&params(1)),
+                        &ChooseKParams::default(),
+                    )?;
+                    out["choice"] = choice_json(&choice);
+                    choice.k
+                }
+            };
+            let r = set.kmeans(&params(k))?;
             out["labels"] = json!(r.labels);
             out["k"] = json!(k);
+            out["categories"] = json!(k);
             out["seeding"] = json!(seeding);
             out["seed"] = json!(a.seed);
             out["iterations"] = json!(r.iterations);
@@ -70,23 +120,37 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
             out["cost"] = json!(r.cost);
         }
         "kmedoids" => {
-            let k = need(a.k, "--k", "kmedoids")?;
+            let k =
+                match need(a.k, "--k", "kmedoids")? {
+                    Count::Exactly(k) => k,
+                    Count::Auto => return Err(Error::InvalidParameter(
+                        "--method kmedoids needs a number for --k (auto is for kmeans and hkmeans)"
+                            .into(),
+                    )),
+                };
             let r = set.kmedoids(&KMedoidsParams::new(k).seed(a.seed))?;
             out["labels"] = json!(r.labels);
             out["medoids"] = json!(r.medoids.iter().map(|&i| &files[i]).collect::<Vec<_>>());
         }
         "hkmeans" => {
             // Above the matrix limit the tree is built without the matrix.
-            let tree = set.hkmeans(&HkMeansParams::new(a.seed))?;
+            let hk = HkMeansParams::new(a.seed);
+            let tree = set.hkmeans(&hk)?;
             let cut = match (a.threshold, a.categories) {
                 (Some(t), None) => tree.cut(t)?,
-                (None, Some(k)) => tree.cut_k(k)?,
-                _ => {
-                    return Err(Error::InvalidParameter(
-                        "--method hkmeans needs exactly one of --threshold T or --categories K"
-                            .into(),
-                    ))
+                (None, Some(Count::Exactly(k))) => tree.cut_k(k)?,
+                (None, None | Some(Count::Auto)) => {
+                    let choice = set.choose_categories(
+                        Clusterer::Tree(&tree, &hk),
+                        &ChooseKParams::default(),
+                    )?;
+                    out["choice"] = choice_json(&choice);
+                    tree.cut_k(choice.k)?
                 }
+                (Some(_), Some(_)) => return Err(Error::InvalidParameter(
+                    "--method hkmeans takes one of --threshold T or --categories K|auto, not both"
+                        .into(),
+                )),
             };
             out["labels"] = json!(cut.labels);
             out["threshold"] = json!(cut.threshold);
