@@ -3,6 +3,8 @@
 //! connections each chunk holds (so a pass can skip chunks it has no use for).
 
 use super::msg::Encoding;
+use super::source::{ByteSource, Window};
+use crate::error::Result;
 use std::collections::HashMap;
 
 /// One connection (ROS 1) or channel (MCAP).
@@ -70,4 +72,50 @@ pub(crate) enum Item {
     Lost { conn: u32, count: u64 },
     /// A record of no interest.
     Skip,
+}
+
+/// Where a walk over the data of a bag is: the next top-level record, the
+/// end of the data, and the chunk being read (decompressed) with the
+/// position inside it.
+pub(crate) struct WalkState {
+    pub(crate) pos: u64,
+    pub(crate) end: u64,
+    pub(crate) chunk: Vec<u8>,
+    /// Position in `chunk`; past its end when no chunk is being read.
+    pub(crate) in_chunk: usize,
+    /// Byte offset of the chunk record in the file (for messages).
+    pub(crate) chunk_at: u64,
+    /// The last chunk could not be read: the index records after it say
+    /// what it held ([`Item::Lost`]).
+    pub(crate) failed: bool,
+}
+
+impl WalkState {
+    pub(crate) fn new(pos: u64, end: u64) -> Self {
+        WalkState {
+            pos,
+            end,
+            chunk: Vec::new(),
+            in_chunk: usize::MAX,
+            chunk_at: 0,
+            failed: false,
+        }
+    }
+}
+
+/// What a walk is for: the layout it reads by, the connections it wants
+/// (chunks the index says hold none of them are skipped unread), and the
+/// largest decompressed chunk it accepts.
+pub(crate) struct Want<'a> {
+    pub(crate) layout: &'a Layout,
+    pub(crate) wanted: &'a dyn Fn(u32) -> bool,
+    pub(crate) max_chunk: usize,
+}
+
+/// A walk over the chunks of one bag format, record by record.
+pub(crate) trait Walk<S: ByteSource> {
+    /// The next item, reading through `win`; None at the end of the data.
+    fn next(&mut self, win: &mut Window<S>, want: &Want) -> Option<Result<Item>>;
+    /// The current chunk, into which [`Item::Msg`] ranges point.
+    fn chunk(&self) -> &[u8];
 }

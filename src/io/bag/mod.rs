@@ -40,7 +40,7 @@ use super::poses::Pose;
 use super::recording::RecordedScan;
 use super::ReadLimits;
 use crate::error::{Error, Result};
-use layout::{is_type, Item, Layout};
+use layout::{is_type, Item, Layout, Walk, Want};
 use pose::{Series, TfTree};
 use serde::{Deserialize, Serialize};
 use source::Window;
@@ -111,31 +111,7 @@ pub(crate) fn message(e: Error) -> String {
     }
 }
 
-enum Walker {
-    Ros1(ros1::Walker),
-    Mcap(rosbag2::Walker),
-}
-
-impl Walker {
-    fn next<S: ByteSource>(
-        &mut self,
-        win: &mut Window<S>,
-        layout: &Layout,
-        wanted: &dyn Fn(u32) -> bool,
-        max_chunk: usize,
-    ) -> Option<Result<Item>> {
-        match self {
-            Walker::Ros1(w) => w.next(win, layout, wanted, max_chunk),
-            Walker::Mcap(w) => w.next(win, layout, wanted, max_chunk),
-        }
-    }
-    fn chunk(&self) -> &[u8] {
-        match self {
-            Walker::Ros1(w) => w.chunk(),
-            Walker::Mcap(w) => w.chunk(),
-        }
-    }
-}
+type Walker<S> = Box<dyn Walk<S>>;
 
 /// An opened bag: its bytes, format and layout.
 struct Bag<S> {
@@ -146,7 +122,7 @@ struct Bag<S> {
     data: (u64, u64),
 }
 
-impl<S: ByteSource> Bag<S> {
+impl<S: ByteSource + 'static> Bag<S> {
     fn open(src: S, file: &str) -> Result<Self> {
         let mut win = Window::new(src);
         let size = win.size();
@@ -177,12 +153,12 @@ impl<S: ByteSource> Bag<S> {
         Ok(bag)
     }
 
-    fn walker(&self) -> Walker {
+    fn walker(&self) -> Walker<S> {
         let (start, end) = self.data;
         if self.ros1 {
-            Walker::Ros1(ros1::Walker::new(start, end))
+            Box::new(ros1::Walker::new(start, end))
         } else {
-            Walker::Mcap(rosbag2::Walker::new(start, end))
+            Box::new(rosbag2::Walker::new(start, end))
         }
     }
 
@@ -194,7 +170,14 @@ impl<S: ByteSource> Bag<S> {
         let max = self.max_chunk();
         let mut layout = std::mem::take(&mut self.layout);
         layout.counts.clear();
-        while let Some(item) = w.next(&mut self.win, &layout, &|_| true, max) {
+        while let Some(item) = w.next(
+            &mut self.win,
+            &Want {
+                layout: &layout,
+                wanted: &|_| true,
+                max_chunk: max,
+            },
+        ) {
             match item {
                 Ok(Item::Conn(c)) => layout.add(c),
                 Ok(Item::Msg { conn, .. }) => *layout.counts.entry(conn).or_default() += 1,
@@ -259,7 +242,7 @@ fn is_tf(t: &str) -> bool {
 
 /// The topics of a bag, sorted by name, with their types and message counts.
 /// Reads only the index (ROS 1) or summary (MCAP) when the bag has one.
-pub fn topics<S: ByteSource>(src: S, file: &str) -> Result<Vec<TopicInfo>> {
+pub fn topics<S: ByteSource + 'static>(src: S, file: &str) -> Result<Vec<TopicInfo>> {
     Ok(Bag::open(src, file).map_err(|e| e.in_file(file))?.topics())
 }
 
@@ -280,7 +263,7 @@ pub struct BagReader<S> {
     opts: BagOptions,
     topic: String,
     cloud_ids: Vec<u32>,
-    walker: Walker,
+    walker: Walker<S>,
     poses: Poses,
     bag_name: String,
     width: usize,
@@ -310,7 +293,7 @@ pub fn topics_path(path: &std::path::Path) -> Result<Vec<TopicInfo>> {
     topics(FileSource::open(path).map_err(|e| e.in_file(&file))?, &file)
 }
 
-impl<S: ByteSource> BagReader<S> {
+impl<S: ByteSource + 'static> BagReader<S> {
     /// Open a bag: read its index or summary, choose the cloud topic, read
     /// the poses. `file` names the bag in errors and (its last component) in
     /// cloud names. Fails when no cloud topic can be chosen; everything
@@ -460,9 +443,11 @@ impl<S: ByteSource> BagReader<S> {
         let mut first_bad = None;
         while let Some(item) = walker.next(
             &mut self.bag.win,
-            &self.bag.layout,
-            &|id| ids.contains(&id),
-            max,
+            &Want {
+                layout: &self.bag.layout,
+                wanted: &|id| ids.contains(&id),
+                max_chunk: max,
+            },
         ) {
             // Chunk errors are reported by the cloud pass, not twice.
             let Ok(Item::Msg { conn, range, .. }) = item else {
@@ -610,7 +595,7 @@ impl<S: ByteSource> BagReader<S> {
     }
 }
 
-impl<S: ByteSource> Iterator for BagReader<S> {
+impl<S: ByteSource + 'static> Iterator for BagReader<S> {
     type Item = Result<RecordedScan>;
 
     fn next(&mut self) -> Option<Self::Item> {
@@ -622,9 +607,11 @@ impl<S: ByteSource> Iterator for BagReader<S> {
             let ids = &self.cloud_ids;
             let item = self.walker.next(
                 &mut self.bag.win,
-                &self.bag.layout,
-                &|id| ids.contains(&id),
-                max,
+                &Want {
+                    layout: &self.bag.layout,
+                    wanted: &|id| ids.contains(&id),
+                    max_chunk: max,
+                },
             )?;
             match item {
                 Err(e) => {

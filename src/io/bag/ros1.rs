@@ -6,7 +6,7 @@
 //! `index_pos` the 0x07 connection and 0x06 chunk-info records.
 
 use super::compress::decompress;
-use super::layout::{Conn, Item, Layout};
+use super::layout::{Conn, Item, Layout, Walk, WalkState, Want};
 use super::msg::Encoding;
 use super::source::{ByteSource, Window};
 use crate::error::{Error, Result};
@@ -160,96 +160,20 @@ pub(crate) fn open<S: ByteSource>(win: &mut Window<S>) -> Result<(Layout, u64, u
 
 /// Walks the chunks from `pos` to `end`, yielding the records inside.
 pub(crate) struct Walker {
-    pub(crate) pos: u64,
-    pub(crate) end: u64,
-    chunk: Vec<u8>,
-    in_chunk: usize,
-    chunk_at: u64,
-    /// The last chunk could not be read: its index records say what it held.
-    failed: bool,
+    s: WalkState,
 }
 
 impl Walker {
     pub(crate) fn new(pos: u64, end: u64) -> Self {
         Walker {
-            pos,
-            end,
-            chunk: Vec::new(),
-            in_chunk: usize::MAX,
-            chunk_at: 0,
-            failed: false,
-        }
-    }
-
-    pub(crate) fn chunk(&self) -> &[u8] {
-        &self.chunk
-    }
-
-    pub(crate) fn next<S: ByteSource>(
-        &mut self,
-        win: &mut Window<S>,
-        layout: &Layout,
-        wanted: &dyn Fn(u32) -> bool,
-        max_chunk: usize,
-    ) -> Option<Result<Item>> {
-        loop {
-            if self.in_chunk < self.chunk.len() {
-                return Some(self.inner());
-            }
-            if self.pos >= self.end {
-                return None;
-            }
-            let at = self.pos;
-            let r = match record(win, at) {
-                Ok(r) => r,
-                Err(e) => {
-                    self.pos = self.end;
-                    return Some(Err(e));
-                }
-            };
-            self.pos = r.next;
-            if r.op == OP_INDEX_DATA && self.failed {
-                let f = Fields::parse(&r.header, at);
-                let lost = f.and_then(|f| Ok((f.u32("conn", at)?, f.u32("count", at)?)));
-                if let Ok((conn, count)) = lost {
-                    return Some(Ok(Item::Lost {
-                        conn,
-                        count: count as u64,
-                    }));
-                }
-            }
-            if r.op != OP_CHUNK || !layout.chunk_may_hold(at, wanted) {
-                continue;
-            }
-            self.failed = false;
-            let res = (|| {
-                let f = Fields::parse(&r.header, at)?;
-                let size = f.u32("size", at)? as usize;
-                if size > max_chunk {
-                    return Err(bad(format!(
-                        "chunk at byte {at} claims {size} bytes, over the limit"
-                    )));
-                }
-                let compression = f.string("compression");
-                let data = win.get(r.data_at, r.data_len, "chunk")?;
-                decompress(&compression, data, size, &mut self.chunk)
-                    .map_err(|e| bad(format!("chunk at byte {at}: {}", super::message(e))))
-            })();
-            win.shrink();
-            if let Err(e) = res {
-                self.chunk.clear();
-                self.failed = true;
-                return Some(Err(e));
-            }
-            self.in_chunk = 0;
-            self.chunk_at = at;
+            s: WalkState::new(pos, end),
         }
     }
 
     /// The next record inside the current chunk.
     fn inner(&mut self) -> Result<Item> {
-        let b = &self.chunk[self.in_chunk..];
-        let at = self.chunk_at;
+        let b = &self.s.chunk[self.s.in_chunk..];
+        let at = self.s.chunk_at;
         let cut = || {
             bad(format!(
                 "truncated chunk at byte {at}: a record inside runs past its end"
@@ -264,11 +188,11 @@ impl Walker {
             Some((header, data_start, dl))
         })();
         let Some((header, data_start, dl)) = parsed else {
-            self.in_chunk = usize::MAX;
+            self.s.in_chunk = usize::MAX;
             return Err(cut());
         };
-        let base = self.in_chunk;
-        self.in_chunk += data_start + dl;
+        let base = self.s.in_chunk;
+        self.s.in_chunk += data_start + dl;
         let f = Fields::parse(header, at)?;
         match f.op(at)? {
             OP_MSG => {
@@ -284,10 +208,70 @@ impl Walker {
                 })
             }
             OP_CONNECTION => {
-                let data = &self.chunk[base + data_start..base + data_start + dl];
+                let data = &self.s.chunk[base + data_start..base + data_start + dl];
                 Ok(Item::Conn(connection(&f, data, at)?))
             }
             _ => Ok(Item::Skip),
         }
+    }
+}
+
+impl<S: ByteSource> Walk<S> for Walker {
+    fn next(&mut self, win: &mut Window<S>, want: &Want) -> Option<Result<Item>> {
+        loop {
+            if self.s.in_chunk < self.s.chunk.len() {
+                return Some(self.inner());
+            }
+            if self.s.pos >= self.s.end {
+                return None;
+            }
+            let at = self.s.pos;
+            let r = match record(win, at) {
+                Ok(r) => r,
+                Err(e) => {
+                    self.s.pos = self.s.end;
+                    return Some(Err(e));
+                }
+            };
+            self.s.pos = r.next;
+            if r.op == OP_INDEX_DATA && self.s.failed {
+                let f = Fields::parse(&r.header, at);
+                let lost = f.and_then(|f| Ok((f.u32("conn", at)?, f.u32("count", at)?)));
+                if let Ok((conn, count)) = lost {
+                    return Some(Ok(Item::Lost {
+                        conn,
+                        count: count as u64,
+                    }));
+                }
+            }
+            if r.op != OP_CHUNK || !want.layout.chunk_may_hold(at, want.wanted) {
+                continue;
+            }
+            self.s.failed = false;
+            let res = (|| {
+                let f = Fields::parse(&r.header, at)?;
+                let size = f.u32("size", at)? as usize;
+                if size > want.max_chunk {
+                    return Err(bad(format!(
+                        "chunk at byte {at} claims {size} bytes, over the limit"
+                    )));
+                }
+                let compression = f.string("compression");
+                let data = win.get(r.data_at, r.data_len, "chunk")?;
+                decompress(&compression, data, size, &mut self.s.chunk)
+                    .map_err(|e| bad(format!("chunk at byte {at}: {}", super::message(e))))
+            })();
+            win.shrink();
+            if let Err(e) = res {
+                self.s.chunk.clear();
+                self.s.failed = true;
+                return Some(Err(e));
+            }
+            self.s.in_chunk = 0;
+            self.s.chunk_at = at;
+        }
+    }
+    fn chunk(&self) -> &[u8] {
+        &self.s.chunk
     }
 }

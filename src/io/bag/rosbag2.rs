@@ -7,7 +7,7 @@
 //! their message counts and the chunks' contents without reading the data.
 
 use super::compress::decompress;
-use super::layout::{Conn, Item, Layout};
+use super::layout::{Conn, Item, Layout, Walk, WalkState, Want};
 use super::msg::Encoding;
 use super::source::{ByteSource, Window};
 use crate::error::{Error, Result};
@@ -98,36 +98,20 @@ pub(crate) fn open<S: ByteSource>(win: &mut Window<S>) -> Result<(Layout, u64)> 
 /// Walks the data section from `pos` to `end`, yielding the records inside
 /// chunks and those outside (a file written without chunks).
 pub(crate) struct Walker {
-    pub(crate) pos: u64,
-    pub(crate) end: u64,
-    chunk: Vec<u8>,
-    in_chunk: usize,
-    chunk_at: u64,
+    s: WalkState,
     schemas: HashMap<u16, String>,
-    /// The last chunk could not be read: its message indexes say what it held.
-    failed: bool,
 }
 
 impl Walker {
     pub(crate) fn new(pos: u64, end: u64) -> Self {
         Walker {
-            pos,
-            end,
-            chunk: Vec::new(),
-            in_chunk: usize::MAX,
-            chunk_at: 0,
+            s: WalkState::new(pos, end),
             schemas: HashMap::new(),
-            failed: false,
         }
     }
-
-    pub(crate) fn chunk(&self) -> &[u8] {
-        &self.chunk
-    }
-
-    /// Schema, channel or message record `body` found at `base` in `self.chunk`.
+    /// Schema, channel or message record `body` found at `base` in `self.s.chunk`.
     fn item(&mut self, opcode: u8, base: usize, len: usize, at: u64) -> Result<Item> {
-        let body = &self.chunk[base..base + len];
+        let body = &self.s.chunk[base..base + len];
         match opcode {
             op::MESSAGE => {
                 // channel u16, sequence u32, log_time u64, publish_time u64, data.
@@ -155,93 +139,6 @@ impl Walker {
         }
     }
 
-    pub(crate) fn next<S: ByteSource>(
-        &mut self,
-        win: &mut Window<S>,
-        layout: &Layout,
-        wanted: &dyn Fn(u32) -> bool,
-        max_chunk: usize,
-    ) -> Option<Result<Item>> {
-        loop {
-            if self.in_chunk < self.chunk.len() {
-                let at = self.chunk_at;
-                let b = &self.chunk[self.in_chunk..];
-                let Some(len) = b
-                    .get(1..9)
-                    .map(|l| u64::from_le_bytes(l.try_into().expect("8")))
-                else {
-                    self.in_chunk = usize::MAX;
-                    return Some(Err(bad(format!("truncated chunk at byte {at}"))));
-                };
-                if len > (b.len() - 9) as u64 {
-                    self.in_chunk = usize::MAX;
-                    return Some(Err(bad(format!(
-                        "truncated chunk at byte {at}: a record inside runs past its end"
-                    ))));
-                }
-                let (opcode, base) = (b[0], self.in_chunk + 9);
-                self.in_chunk = base + len as usize;
-                return Some(self.item(opcode, base, len as usize, at));
-            }
-            if self.pos >= self.end {
-                return None;
-            }
-            let at = self.pos;
-            let (opcode, len) = match frame(win, at) {
-                Ok(f) => f,
-                Err(e) => {
-                    self.pos = self.end;
-                    return Some(Err(e));
-                }
-            };
-            self.pos = at.saturating_add(9).saturating_add(len);
-            match opcode {
-                op::DATA_END | op::FOOTER => {
-                    self.pos = self.end;
-                    return None;
-                }
-                op::CHUNK if layout.chunk_may_hold(at, wanted) => {
-                    let res = self.load_chunk(win, at, len, max_chunk);
-                    win.shrink();
-                    self.failed = res.is_err();
-                    if let Err(e) = res {
-                        self.chunk.clear();
-                        return Some(Err(e));
-                    }
-                }
-                // channel u16, then the (time u64, offset u64) entries' byte length u32.
-                op::MESSAGE_INDEX if self.failed => {
-                    if let Ok(b) = win.get(at + 9, len.min(6), "MCAP message index") {
-                        if b.len() == 6 {
-                            let conn = u16::from_le_bytes([b[0], b[1]]) as u32;
-                            let n = u32::from_le_bytes(b[2..6].try_into().expect("4 bytes"));
-                            return Some(Ok(Item::Lost {
-                                conn,
-                                count: n as u64 / 16,
-                            }));
-                        }
-                    }
-                }
-                op::MESSAGE | op::SCHEMA | op::CHANNEL => {
-                    // Outside chunks: copy the record to the chunk buffer so
-                    // messages are read from one place.
-                    let body = match win.get(at + 9, len, "MCAP record") {
-                        Ok(b) => b,
-                        Err(e) => {
-                            self.pos = self.end;
-                            return Some(Err(e));
-                        }
-                    };
-                    self.chunk.clear();
-                    self.chunk.extend_from_slice(body);
-                    self.in_chunk = usize::MAX;
-                    return Some(self.item(opcode, 0, len as usize, at));
-                }
-                _ => {}
-            }
-        }
-    }
-
     fn load_chunk<S: ByteSource>(
         &mut self,
         win: &mut Window<S>,
@@ -261,10 +158,96 @@ impl Walker {
                 "chunk at byte {at} claims {size} bytes, over the limit"
             )));
         }
-        decompress(&header.compression, &data, size as usize, &mut self.chunk)
+        decompress(&header.compression, &data, size as usize, &mut self.s.chunk)
             .map_err(|e| bad(format!("chunk at byte {at}: {}", super::message(e))))?;
-        self.in_chunk = 0;
-        self.chunk_at = at;
+        self.s.in_chunk = 0;
+        self.s.chunk_at = at;
         Ok(())
+    }
+}
+
+impl<S: ByteSource> Walk<S> for Walker {
+    fn next(&mut self, win: &mut Window<S>, want: &Want) -> Option<Result<Item>> {
+        loop {
+            if self.s.in_chunk < self.s.chunk.len() {
+                let at = self.s.chunk_at;
+                let b = &self.s.chunk[self.s.in_chunk..];
+                let Some(len) = b
+                    .get(1..9)
+                    .map(|l| u64::from_le_bytes(l.try_into().expect("8")))
+                else {
+                    self.s.in_chunk = usize::MAX;
+                    return Some(Err(bad(format!("truncated chunk at byte {at}"))));
+                };
+                if len > (b.len() - 9) as u64 {
+                    self.s.in_chunk = usize::MAX;
+                    return Some(Err(bad(format!(
+                        "truncated chunk at byte {at}: a record inside runs past its end"
+                    ))));
+                }
+                let (opcode, base) = (b[0], self.s.in_chunk + 9);
+                self.s.in_chunk = base + len as usize;
+                return Some(self.item(opcode, base, len as usize, at));
+            }
+            if self.s.pos >= self.s.end {
+                return None;
+            }
+            let at = self.s.pos;
+            let (opcode, len) = match frame(win, at) {
+                Ok(f) => f,
+                Err(e) => {
+                    self.s.pos = self.s.end;
+                    return Some(Err(e));
+                }
+            };
+            self.s.pos = at.saturating_add(9).saturating_add(len);
+            match opcode {
+                op::DATA_END | op::FOOTER => {
+                    self.s.pos = self.s.end;
+                    return None;
+                }
+                op::CHUNK if want.layout.chunk_may_hold(at, want.wanted) => {
+                    let res = self.load_chunk(win, at, len, want.max_chunk);
+                    win.shrink();
+                    self.s.failed = res.is_err();
+                    if let Err(e) = res {
+                        self.s.chunk.clear();
+                        return Some(Err(e));
+                    }
+                }
+                // channel u16, then the (time u64, offset u64) entries' byte length u32.
+                op::MESSAGE_INDEX if self.s.failed => {
+                    if let Ok(b) = win.get(at + 9, len.min(6), "MCAP message index") {
+                        if b.len() == 6 {
+                            let conn = u16::from_le_bytes([b[0], b[1]]) as u32;
+                            let n = u32::from_le_bytes(b[2..6].try_into().expect("4 bytes"));
+                            return Some(Ok(Item::Lost {
+                                conn,
+                                count: n as u64 / 16,
+                            }));
+                        }
+                    }
+                }
+                op::MESSAGE | op::SCHEMA | op::CHANNEL => {
+                    // Outside chunks: copy the record to the chunk buffer so
+                    // messages are read from one place.
+                    let body = match win.get(at + 9, len, "MCAP record") {
+                        Ok(b) => b,
+                        Err(e) => {
+                            self.s.pos = self.s.end;
+                            return Some(Err(e));
+                        }
+                    };
+                    self.s.chunk.clear();
+                    self.s.chunk.extend_from_slice(body);
+                    self.s.in_chunk = usize::MAX;
+                    return Some(self.item(opcode, 0, len as usize, at));
+                }
+                _ => {}
+            }
+        }
+    }
+    fn chunk(&self) -> &[u8] {
+        &self.s.chunk
     }
 }
