@@ -3,7 +3,7 @@
 //! sums, stamps and poses must match what the writer wrote.
 #![cfg(not(target_arch = "wasm32"))]
 
-use placecat::io::bag::{topics_path, BagOptions, BagReader, PoseSource};
+use placecat::io::bag::{topics, topics_path, BagOptions, BagReader, PoseSource};
 use placecat::io::recording::RecordedScan;
 use serde_json::Value;
 use std::path::PathBuf;
@@ -354,4 +354,62 @@ fn a_tf_tree_without_the_chosen_frame_is_reported_and_the_clouds_read_without_po
     // Auto does not insist: no error, no pose.
     let (clouds, errors) = read("bad_tf.bag", BagOptions::default());
     assert!(errors.is_empty() && clouds.len() == 5 && clouds.iter().all(|c| c.pose.is_none()));
+}
+
+/// Clouds of a bag held in memory (the slice source the page's would be).
+fn read_bytes(bytes: Vec<u8>, name: &str) -> Vec<RecordedScan> {
+    let reader = BagReader::open(bytes, name, BagOptions::default()).unwrap();
+    reader.map(|c| c.unwrap()).collect()
+}
+
+fn same_clouds(bag: &str, got: &[RecordedScan]) {
+    let exp = expected();
+    let want = exp[bag]["clouds"].as_array().unwrap();
+    assert_eq!(got.len(), want.len(), "{bag}");
+    for (c, w) in got.iter().zip(want) {
+        check_cloud(bag, c, w);
+        check_pose(c, &w["odom_pose"]);
+    }
+}
+
+#[test]
+fn a_bag_without_index_or_summary_is_read_by_walking_it() {
+    // ROS 1 as a recorder leaves it when stopped hard: index_pos 0.
+    let mut b = std::fs::read(dir().join("ros1_lz4.bag")).unwrap();
+    let at = b.windows(10).position(|w| w == b"index_pos=").unwrap() + 10;
+    b[at..at + 8].fill(0);
+    let t = topics(b.clone(), "ros1_lz4.bag").unwrap();
+    let points = t.iter().find(|t| t.name == "/points").unwrap();
+    assert_eq!(
+        (points.msgtype.as_str(), points.count),
+        ("sensor_msgs/PointCloud2", 5)
+    );
+    same_clouds("ros1_lz4.bag", &read_bytes(b, "ros1_lz4.bag"));
+
+    // MCAP whose footer points to no summary.
+    let mut b = std::fs::read(dir().join("ros2_mcap_lz4.mcap")).unwrap();
+    let footer = b.len() - 8 - 29;
+    assert_eq!(b[footer], 0x02);
+    b[footer + 9..footer + 17].fill(0);
+    let t = topics(b.clone(), "ros2_mcap_lz4.mcap").unwrap();
+    let odom = t.iter().find(|t| t.name == "/odom").unwrap();
+    assert_eq!(
+        odom.count,
+        expected()["ros2_mcap_lz4.mcap"]["topics"]["/odom"][1]
+            .as_u64()
+            .unwrap()
+    );
+    same_clouds("ros2_mcap_lz4.mcap", &read_bytes(b, "ros2_mcap_lz4.mcap"));
+}
+
+#[test]
+fn not_a_bag_is_refused_naming_the_file() {
+    let e = topics(b"ply\nformat ascii 1.0\n".to_vec(), "scan.bag")
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("scan.bag: ROS bag: not a ROS bag"), "{e}");
+    let mut b = std::fs::read(dir().join("ros1_plain.bag")).unwrap();
+    b.truncate(3000);
+    let e = topics(b, "cut.bag").unwrap_err().to_string();
+    assert!(e.contains("cut.bag") && e.contains("file ends"), "{e}");
 }

@@ -2,8 +2,11 @@
 //! (`/tf` and `/tf_static`) chained from its root down to a chosen frame.
 //! Each series is interpolated at a cloud's stamp (position linearly,
 //! rotation by slerp) and clamped to its ends outside the recorded span.
+//! Poses are gathered as the walk meets them, in the same pass as the
+//! clouds; [`Poses::horizon`] says up to when they are known.
 
-use super::msg::Transform;
+use super::msg::{self, Encoding, Transform};
+use crate::error::Result;
 use nalgebra::Isometry3;
 use std::collections::HashMap;
 
@@ -12,12 +15,14 @@ use std::collections::HashMap;
 pub(crate) struct Series(Vec<(f64, Isometry3<f64>)>);
 
 impl Series {
+    /// Insert in time order (messages mostly come in order: cheap).
     pub(crate) fn push(&mut self, t: f64, iso: Isometry3<f64>) {
-        self.0.push((t, iso));
+        let i = self.0.partition_point(|(u, _)| *u <= t);
+        self.0.insert(i, (t, iso));
     }
 
-    pub(crate) fn finish(&mut self) {
-        self.0.sort_by(|a, b| a.0.total_cmp(&b.0));
+    fn last(&self) -> f64 {
+        self.0.last().map_or(f64::NEG_INFINITY, |p| p.0)
     }
 
     pub(crate) fn at(&self, t: f64) -> Option<Isometry3<f64>> {
@@ -37,13 +42,27 @@ impl Series {
 
 /// The tf tree: for each child frame, its parent and the series of
 /// transforms parent -> child.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub(crate) struct TfTree {
     edges: HashMap<String, (String, Series)>,
+    /// Latest stamp of a moving (not static) transform.
+    latest: f64,
+}
+
+impl Default for TfTree {
+    fn default() -> Self {
+        TfTree {
+            edges: HashMap::new(),
+            latest: f64::NEG_INFINITY,
+        }
+    }
 }
 
 impl TfTree {
-    pub(crate) fn add(&mut self, t: Transform) {
+    pub(crate) fn add(&mut self, t: Transform, fixed: bool) {
+        if !fixed {
+            self.latest = self.latest.max(t.stamp);
+        }
         let e = self
             .edges
             .entry(t.child)
@@ -51,12 +70,6 @@ impl TfTree {
         // A frame re-parented mid-recording keeps its latest parent.
         e.0 = t.parent;
         e.1.push(t.stamp, t.iso);
-    }
-
-    pub(crate) fn finish(&mut self) {
-        for e in self.edges.values_mut() {
-            e.1.finish();
-        }
     }
 
     pub(crate) fn has(&self, frame: &str) -> bool {
@@ -97,4 +110,61 @@ impl TfTree {
 /// Yaw (about z) of a rotation, radians.
 pub(crate) fn yaw(iso: &Isometry3<f64>) -> f64 {
     iso.rotation.euler_angles().2
+}
+
+/// The poses of a bag, as far as the walk has read them.
+pub(crate) enum Poses {
+    None,
+    /// An odometry topic's connections and its series.
+    Odometry(Vec<u32>, Series),
+    Tf(TfPoses),
+}
+
+/// The tf topics' connections (and which are static), the tree, the frame
+/// asked for (None: each cloud's frame), the tf topic named in messages, and
+/// whether a missing frame is an error (it is not when chosen by default).
+pub(crate) struct TfPoses {
+    pub(crate) ids: Vec<(u32, bool)>,
+    pub(crate) tree: TfTree,
+    pub(crate) frame: Option<String>,
+    pub(crate) topic: String,
+    pub(crate) strict: bool,
+}
+
+impl Poses {
+    pub(crate) fn wants(&self, id: u32) -> bool {
+        match self {
+            Poses::None => false,
+            Poses::Odometry(ids, _) => ids.contains(&id),
+            Poses::Tf(tf) => tf.ids.iter().any(|&(i, _)| i == id),
+        }
+    }
+
+    /// Add the poses of one message of connection `id`.
+    pub(crate) fn add(&mut self, id: u32, data: &[u8], enc: Encoding) -> Result<()> {
+        match self {
+            Poses::None => {}
+            Poses::Odometry(_, series) => {
+                let t = msg::odometry(data, enc)?;
+                series.push(t.stamp, t.iso);
+            }
+            Poses::Tf(tf) => {
+                let fixed = tf.ids.iter().any(|&(i, f)| i == id && f);
+                for t in msg::tf_message(data, enc)? {
+                    tf.tree.add(t, fixed);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Poses are known up to this time: a cloud stamped later waits for the
+    /// next pose message, so that it is interpolated, not extrapolated.
+    pub(crate) fn horizon(&self) -> f64 {
+        match self {
+            Poses::None => f64::INFINITY,
+            Poses::Odometry(_, s) => s.last(),
+            Poses::Tf(tf) => tf.tree.latest,
+        }
+    }
 }

@@ -128,6 +128,11 @@ pub(crate) fn open<S: ByteSource>(win: &mut Window<S>) -> Result<(Layout, u64, u
     let fields = Fields::parse(&head.header, start)?;
     let index_pos = fields.u64("index_pos", start)?;
     let size = win.size();
+    if head.next > size {
+        return Err(bad(format!(
+            "the file ends at byte {size}, inside the bag header record (truncated?)"
+        )));
+    }
     let mut layout = Layout::default();
     if index_pos < head.next || index_pos >= size {
         // Not closed cleanly (index_pos 0): connections come from the chunks.
@@ -243,6 +248,14 @@ impl<S: ByteSource> Walk<S> for Walker {
                         count: count as u64,
                     }));
                 }
+            }
+            if r.op == OP_CONNECTION {
+                // Top-level connections are the index's; a bag whose header
+                // lost its index_pos still has them after the chunks.
+                let conn = win
+                    .get(r.data_at, r.data_len, "connection record")
+                    .and_then(|data| connection(&Fields::parse(&r.header, at)?, data, at));
+                return Some(conn.map(Item::Conn));
             }
             if r.op != OP_CHUNK || !want.layout.chunk_may_hold(at, want.wanted) {
                 continue;

@@ -1,0 +1,33 @@
+//! Reads every cloud of a ROS bag and reports throughput, to show that the
+//! bag streams (run under `/usr/bin/time -v` for the peak memory):
+//! `cargo run --release --example bag_throughput -- BAG`
+use placecat::io::bag::{BagOptions, BagReader};
+use std::time::Instant;
+
+fn main() -> placecat::Result<()> {
+    let path = std::env::args().nth(1).expect("usage: bag_throughput BAG");
+    let path = std::path::Path::new(&path);
+    let bytes = std::fs::metadata(path)?.len() as f64;
+    let start = Instant::now();
+    let (mut clouds, mut points, mut errors, mut posed) = (0usize, 0usize, 0usize, 0usize);
+    for item in BagReader::open_path(path, BagOptions::default())? {
+        match item {
+            Ok(c) => {
+                clouds += 1;
+                points += c.points.len();
+                posed += c.pose.is_some() as usize;
+            }
+            Err(e) => {
+                errors += 1;
+                eprintln!("{e}");
+            }
+        }
+    }
+    let s = start.elapsed().as_secs_f64();
+    println!(
+        "{clouds} clouds ({posed} with a pose), {points} points, {errors} errors, {:.0} MB in {s:.2} s: {:.0} MB/s",
+        bytes / 1e6,
+        bytes / 1e6 / s
+    );
+    Ok(())
+}
