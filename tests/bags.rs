@@ -23,6 +23,7 @@ const GOOD: &[&str] = &[
     "ros1_lz4.bag",
     "ros2_rosbags.mcap",
     "ros2_rosbags_zstd.mcap",
+    "ros2_rosbags_cdr_be.mcap",
     "ros2_mcap_lz4.mcap",
     "ros2_mcap_none.mcap",
 ];

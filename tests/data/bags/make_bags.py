@@ -226,7 +226,7 @@ def write_ros1(path, msgs, compression=None, chunk_threshold=None):
             w.write(conns[topic], ns(t), ROS1.serialize_ros1(msg, typ))
 
 
-def write_rosbags_mcap(path, msgs, zstd=False):
+def write_rosbags_mcap(path, msgs, zstd=False, little_endian=True):
     tmp = Path(tempfile.mkdtemp()) / "bag"
     w = Ros2Writer(tmp, version=9, storage_plugin=StoragePlugin.MCAP)
     if zstd:
@@ -236,7 +236,7 @@ def write_rosbags_mcap(path, msgs, zstd=False):
         for topic, typ, t, msg in msgs:
             if topic not in conns:
                 conns[topic] = w.add_connection(topic, typ, typestore=ROS2)
-            w.write(conns[topic], ns(t), ROS2.serialize_cdr(msg, typ))
+            w.write(conns[topic], ns(t), ROS2.serialize_cdr(msg, typ, little_endian=little_endian))
     (mcap,) = tmp.glob("*.mcap")
     shutil.copy(mcap, path)
     shutil.rmtree(tmp.parent)
@@ -348,10 +348,15 @@ def main():
     ros1("ros1_lz4.bag", msgs, clouds, compression=Ros1Writer.CompressionFormat.LZ4, chunk_threshold=8000)
 
     msgs2, clouds2 = timeline(ROS2, every, seed=2)
-    for name, zstd in [("ros2_rosbags.mcap", False), ("ros2_rosbags_zstd.mcap", True)]:
+    # The last: every message in big-endian CDR (CDR_BE encapsulation).
+    for name, zstd, le in [
+        ("ros2_rosbags.mcap", False, True),
+        ("ros2_rosbags_zstd.mcap", True, True),
+        ("ros2_rosbags_cdr_be.mcap", True, False),
+    ]:
         p = OUT / name
         p.unlink(missing_ok=True)
-        write_rosbags_mcap(p, msgs2, zstd=zstd)
+        write_rosbags_mcap(p, msgs2, zstd=zstd, little_endian=le)
         out[name] = {"clouds": clouds2, "topics": topics_of(msgs2, ros1=False)}
     for name, comp in [("ros2_mcap_lz4.mcap", CompressionType.LZ4), ("ros2_mcap_none.mcap", CompressionType.NONE)]:
         p = OUT / name
