@@ -1,6 +1,12 @@
 //! Reads every cloud of a ROS bag and reports throughput, to show that the
 //! bag streams (run under `/usr/bin/time -v` for the peak memory):
 //! `cargo run --release --example bag_throughput -- BAG`
+//!
+//! Measured (2 cores shared with other builds, load average 10-15), on bags
+//! from `tests/data/bags/make_big_bag.py` (ROS 1, lz4 chunks of one 100k-point
+//! cloud each, with odometry, poses on): 308 MB (200 clouds) in 2.8-3.1 s wall,
+//! 0.54 s CPU, peak RSS 8.0 MB; 1018 MB (660 clouds) in 5.4 s wall (190 MB/s),
+//! 1.76 s CPU (580 MB/s), peak RSS 8.2 MB: memory follows the chunk, not the file.
 use placecat::io::bag::{BagOptions, BagReader};
 use std::time::Instant;
 
