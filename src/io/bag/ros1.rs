@@ -257,10 +257,13 @@ impl<S: ByteSource> Walk<S> for Walker {
                     .and_then(|data| connection(&Fields::parse(&r.header, at)?, data, at));
                 return Some(conn.map(Item::Conn));
             }
-            if r.op != OP_CHUNK || !want.layout.chunk_may_hold(at, want.wanted) {
+            if r.op != OP_CHUNK {
                 continue;
             }
             self.s.failed = false;
+            if !want.layout.chunk_may_hold(at, want.wanted) {
+                continue;
+            }
             let res = (|| {
                 let f = Fields::parse(&r.header, at)?;
                 let size = f.u32("size", at)? as usize;

@@ -206,7 +206,10 @@ impl<S: ByteSource> Walk<S> for Walker {
                     self.s.pos = self.s.end;
                     return None;
                 }
-                op::CHUNK if want.layout.chunk_may_hold(at, want.wanted) => {
+                op::CHUNK if !want.layout.chunk_may_hold(at, want.wanted) => {
+                    self.s.failed = false;
+                }
+                op::CHUNK => {
                     let res = self.load_chunk(win, at, len, want.max_chunk);
                     win.shrink();
                     self.s.failed = res.is_err();
