@@ -175,6 +175,8 @@ fn thinning_keeps_every_nth_cloud_or_one_every_d_metres_with_stable_names() {
         ..BagOptions::default()
     };
     let kept = |opts| -> Vec<usize> { read("ros1_bz2.bag", opts).0.iter().map(index_of).collect() };
+    let r = BagReader::open_path(&dir().join("ros1_bz2.bag"), every(2, None)).unwrap();
+    assert_eq!((r.topic(), r.topic_len(), r.clouds_met()), ("/points", 5, 0));
     assert_eq!(kept(every(2, None)), [0, 2, 4]);
     assert_eq!(kept(every(3, None)), [0, 3]);
     // The robot moves sqrt(1 + 0.25) = 1.118 m between clouds 0.5 s apart... per

@@ -37,6 +37,8 @@ pub struct BagReader<S> {
     walker: Walker<S>,
     poses: Poses,
     bag_name: String,
+    /// Clouds in the topic (before thinning), from the index or a count.
+    count: u64,
     width: usize,
     /// Index of the next cloud message of the topic.
     index: usize,
@@ -195,6 +197,7 @@ impl<S: ByteSource + 'static> BagReader<S> {
             walker: bag.walker(),
             bag_name: file.rsplit(['/', '\\']).next().unwrap_or(file).to_string(),
             width: count.saturating_sub(1).to_string().len().max(6),
+            count,
             bag,
             opts,
             topic,
@@ -214,6 +217,16 @@ impl<S: ByteSource + 'static> BagReader<S> {
     /// The cloud topic being read.
     pub fn topic(&self) -> &str {
         &self.topic
+    }
+
+    /// How many clouds the topic holds, before thinning (for progress).
+    pub fn topic_len(&self) -> u64 {
+        self.count
+    }
+
+    /// Clouds of the topic met so far, kept or not (for progress).
+    pub fn clouds_met(&self) -> u64 {
+        self.index as u64
     }
 
     fn name(&self, index: usize) -> String {
