@@ -26,6 +26,7 @@ const GOOD: &[&str] = &[
     "ros2_rosbags_cdr_be.mcap",
     "ros2_mcap_lz4.mcap",
     "ros2_mcap_none.mcap",
+    "ros1_corridor.bag",
 ];
 
 /// Every item: clouds and error messages apart.

@@ -363,6 +363,34 @@ def main():
         write_mcap_ros2(p, msgs2, comp)
         out[name] = {"clouds": clouds2, "topics": topics_of(msgs2, ros1=False)}
 
+    # Clouds with structure (a corridor: floor and two walls, points on a 1 cm
+    # grid), so that the CLI test gets descriptors, not only points.
+    def corridor(store, i, rng):
+        n = 900
+        floor = np.c_[rng.uniform(-3, 3, n), rng.uniform(-1, 1, n), np.full(n, -1.0)]
+        walls = [np.c_[rng.uniform(-3, 3, n), np.full(n, s), rng.uniform(-1, 1.5, n)] for s in (-1.0, 1.0)]
+        xyz = np.round(np.vstack([floor] + walls), 2).astype("<f4")
+        PF, PC2 = store.types["sensor_msgs/msg/PointField"], store.types["sensor_msgs/msg/PointCloud2"]
+        fields = [PF(name=c, offset=4 * k, datatype=F32, count=1) for k, c in enumerate("xyz")]
+        msg = PC2(header=header(store, stamp_of(i), "velodyne"), height=1, width=len(xyz), fields=fields,
+                  is_bigendian=False, point_step=12, row_step=12 * len(xyz),
+                  data=np.frombuffer(xyz.tobytes(), np.uint8), is_dense=True)
+        x = xyz.astype(np.float64)
+        expect = {"layout": "corridor", "count": len(xyz), "finite": len(xyz), "stamp": stamp_of(i),
+                  "sum": [float(x[:, k].sum()) for k in range(3)]}
+        return msg, expect
+
+    rng = np.random.default_rng(6)
+    scene, scene_clouds = [], []
+    for i in range(2):
+        msg, expect = corridor(ROS1, i, rng)
+        expect["odom_pose"] = list(base_pose(stamp_of(i))[0]) + [base_pose(stamp_of(i))[1]]
+        scene.append(("/points", "sensor_msgs/msg/PointCloud2", stamp_of(i) + 0.01, msg))
+        scene_clouds.append(expect)
+    scene += [("/odom", "nav_msgs/msg/Odometry", t, odometry(ROS1, t)) for t in (T0 - 1.0, T0 + 1.0)]
+    scene.sort(key=lambda m: m[2])
+    ros1("ros1_corridor.bag", scene, scene_clouds, compression=Ros1Writer.CompressionFormat.BZ2)
+
     # ---- bad bags ----
     # No PointCloud2 at all.
     msgs_nc = [m for m in msgs if m[0] != "/points"]
