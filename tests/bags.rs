@@ -177,7 +177,10 @@ fn thinning_keeps_every_nth_cloud_or_one_every_d_metres_with_stable_names() {
     };
     let kept = |opts| -> Vec<usize> { read("ros1_bz2.bag", opts).0.iter().map(index_of).collect() };
     let r = BagReader::open_path(&dir().join("ros1_bz2.bag"), every(2, None)).unwrap();
-    assert_eq!((r.topic(), r.topic_len(), r.clouds_met()), ("/points", 5, 0));
+    assert_eq!(
+        (r.topic(), r.topic_len(), r.clouds_met()),
+        ("/points", 5, 0)
+    );
     assert_eq!(kept(every(2, None)), [0, 2, 4]);
     assert_eq!(kept(every(3, None)), [0, 3]);
     // The robot moves sqrt(1 + 0.25) = 1.118 m between clouds 0.5 s apart... per
@@ -416,4 +419,19 @@ fn not_a_bag_is_refused_naming_the_file() {
     b.truncate(3000);
     let e = topics(b, "cut.bag").unwrap_err().to_string();
     assert!(e.contains("cut.bag") && e.contains("file ends"), "{e}");
+}
+
+#[test]
+fn a_tf_frame_asked_of_a_bag_without_tf_is_reported_and_the_clouds_read() {
+    let opts = BagOptions {
+        pose: PoseSource::TfFrame("velodyne".into()),
+        ..BagOptions::default()
+    };
+    let clouds = report_and_skip(
+        "ros1_corridor.bag",
+        opts,
+        "no tf topic (tf2_msgs/TFMessage) for frame \"velodyne\"",
+        2,
+    );
+    assert!(clouds.iter().all(|c| c.pose.is_none()));
 }

@@ -129,7 +129,7 @@ fn choose_poses<S: ByteSource + 'static>(bag: &Bag<S>, source: &PoseSource) -> R
         PoseSource::TfFrame(f) => {
             let t = tf_name.clone().ok_or_else(|| {
                 Error::Bag(format!(
-                    "no tf topic (tf2_msgs/TFMessage) for frame {f:?}; {}",
+                    "no tf topic (tf2_msgs/TFMessage) for frame {f:?}, clouds get no pose; {}",
                     bag.list()
                 ))
             })?;
@@ -179,7 +179,16 @@ impl<S: ByteSource + 'static> BagReader<S> {
         }
         let bag = Bag::open(src, file)?;
         let topic = choose_topic(&bag, opts.topic.as_deref())?;
-        let poses = choose_poses(&bag, &opts.pose)?;
+        let mut queued = VecDeque::new();
+        let poses = match choose_poses(&bag, &opts.pose) {
+            Ok(p) => p,
+            // Like a tf tree without the frame: said, and the clouds read.
+            Err(e) if matches!(opts.pose, PoseSource::TfFrame(_)) => {
+                queued.push_back(e);
+                Poses::None
+            }
+            Err(e) => return Err(e),
+        };
         if opts.every_metres.is_some() && matches!(poses, Poses::None) {
             return invalid(format!(
                 "--every-metres needs poses, and the bag has none to use (no \
@@ -208,7 +217,7 @@ impl<S: ByteSource + 'static> BagReader<S> {
             path: 0.0,
             last_position: None,
             kept_at: None,
-            queued: VecDeque::new(),
+            queued,
             missing_frames: HashSet::new(),
             bad_pose: false,
         })
