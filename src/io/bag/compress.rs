@@ -15,7 +15,9 @@ pub(crate) fn decompress(
     dst: &mut Vec<u8>,
 ) -> Result<()> {
     dst.clear();
-    dst.reserve_exact(size);
+    // A lying header must not make a huge allocation before any byte is
+    // decoded: reserve at most 64 MiB up front, grow past it as data comes.
+    dst.reserve_exact(size.min(64 << 20));
     // One byte more than announced is read so an overlong chunk shows.
     let limit = size as u64 + 1;
     let res = match compression {

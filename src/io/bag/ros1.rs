@@ -39,7 +39,9 @@ impl<'a> Fields<'a> {
         let mut v = Vec::new();
         while !b.is_empty() {
             let n = le_u32(b).ok_or_else(|| bad(format!("record header at byte {at} is cut")))?;
-            let f = b.get(4..4 + n as usize).ok_or_else(|| {
+            // Checked: on wasm32 a lying u32 length would overflow usize.
+            let end = (n as usize).checked_add(4).filter(|&e| e <= b.len());
+            let f = end.map(|e| &b[4..e]).ok_or_else(|| {
                 bad(format!(
                     "record header field at byte {at} runs past its end"
                 ))
@@ -49,7 +51,7 @@ impl<'a> Fields<'a> {
                 .position(|&c| c == b'=')
                 .ok_or_else(|| bad(format!("record header field at byte {at} has no '='")))?;
             v.push((&f[..eq], &f[eq + 1..]));
-            b = &b[4 + n as usize..];
+            b = &b[4 + f.len()..];
         }
         Ok(Fields(v))
     }
@@ -90,6 +92,12 @@ struct Record {
 
 fn record<S: ByteSource>(win: &mut Window<S>, at: u64) -> Result<Record> {
     let hl = le_u32(win.get(at, 4, "record")?).expect("4 bytes") as u64;
+    // Record headers are a few fields; a huge length is a corrupt file.
+    if hl > 1 << 20 {
+        return Err(bad(format!(
+            "record at byte {at} claims a {hl}-byte header"
+        )));
+    }
     let header = win.get(at + 4, hl, "record header")?.to_vec();
     let data_at = at + 4 + hl + 4;
     let data_len = le_u32(win.get(at + 4 + hl, 4, "record")?).expect("4 bytes") as u64;
@@ -186,10 +194,10 @@ impl Walker {
         };
         let parsed = (|| {
             let hl = le_u32(b)? as usize;
-            let header = b.get(4..4 + hl)?;
+            let header = b.get(4..hl.checked_add(4)?)?;
             let dl = le_u32(b.get(4 + hl..)?)? as usize;
             let data_start = 4 + hl + 4;
-            b.get(data_start..data_start + dl)?;
+            b.get(data_start..data_start.checked_add(dl)?)?;
             Some((header, data_start, dl))
         })();
         let Some((header, data_start, dl)) = parsed else {
@@ -273,6 +281,12 @@ impl<S: ByteSource> Walk<S> for Walker {
                     )));
                 }
                 let compression = f.string("compression");
+                if r.data_len > want.max_chunk as u64 {
+                    return Err(bad(format!(
+                        "chunk at byte {at} has {} bytes, over the limit",
+                        r.data_len
+                    )));
+                }
                 let data = win.get(r.data_at, r.data_len, "chunk")?;
                 decompress(&compression, data, size, &mut self.s.chunk)
                     .map_err(|e| bad(format!("chunk at byte {at}: {}", super::message(e))))

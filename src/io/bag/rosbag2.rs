@@ -146,6 +146,11 @@ impl Walker {
         len: u64,
         max_chunk: usize,
     ) -> Result<()> {
+        if len > max_chunk as u64 {
+            return Err(bad(format!(
+                "chunk at byte {at} has {len} bytes, over the limit"
+            )));
+        }
         let body = win.get(at + 9, len, "MCAP chunk")?;
         let Record::Chunk { header, data } =
             mcap::parse_record(op::CHUNK, body).map_err(|e| mcap_err(at, e))?
