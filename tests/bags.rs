@@ -463,3 +463,35 @@ fn damaged_bags_never_panic() {
         }
     }
 }
+
+#[test]
+fn two_cloud_topics_need_a_choice_and_each_reads_alone() {
+    let e = open_err("two_cloud_topics.bag", BagOptions::default());
+    assert!(
+        e.contains("two_cloud_topics.bag")
+            && e.contains(
+                "2 PointCloud2 topics (/front/points, /rear/points): choose one with --topic"
+            ),
+        "{e}"
+    );
+    let exp = expected();
+    for (i, topic) in ["/front/points", "/rear/points"].into_iter().enumerate() {
+        let opts = BagOptions {
+            topic: Some(topic.into()),
+            ..BagOptions::default()
+        };
+        let (clouds, errors) = read("two_cloud_topics.bag", opts);
+        assert!(errors.is_empty(), "{errors:?}");
+        assert_eq!(clouds.len(), 1);
+        assert_eq!(
+            clouds[0].name,
+            format!("two_cloud_topics.bag:{topic}:000000")
+        );
+        assert!(clouds[0].pose.is_none());
+        check_cloud(
+            "two_cloud_topics.bag",
+            &clouds[0],
+            &exp["two_cloud_topics.bag"]["clouds"][i],
+        );
+    }
+}

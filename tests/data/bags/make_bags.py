@@ -391,6 +391,16 @@ def main():
     scene.sort(key=lambda m: m[2])
     ros1("ros1_corridor.bag", scene, scene_clouds, compression=Ros1Writer.CompressionFormat.BZ2)
 
+    # Two cloud topics: the reader must be told which (small clouds).
+    rng = np.random.default_rng(7)
+    two, two_clouds = [], []
+    for i, topic in enumerate(["/front/points", "/rear/points"]):
+        msg, expect = make_cloud(ROS1, i, 2, rng)
+        two.append((topic, "sensor_msgs/msg/PointCloud2", stamp_of(i), msg))
+        expect["topic"] = topic
+        two_clouds.append(expect)
+    ros1("two_cloud_topics.bag", two, two_clouds)
+
     # ---- bad bags ----
     # No PointCloud2 at all.
     msgs_nc = [m for m in msgs if m[0] != "/points"]
