@@ -17,6 +17,11 @@
 //! same whatever the thinning), zero-padded to 6 digits or more so that
 //! names sort in recording order.
 //!
+//! In the page, a [`ByteSource`] over a `File` is a worker's
+//! `FileReaderSync.readAsArrayBuffer(file.slice(offset, offset + len))`:
+//! reads are at most one chunk record or 1 MiB, in file order but for the
+//! index or summary read first at the end of the file.
+//!
 //! Report and skip: a chunk that is cut short or compressed in an unknown
 //! way, a cloud without x/y/z, a tf tree without the chosen frame, each comes
 //! out of the iterator as an `Err` naming the file and the topic, and the
@@ -56,7 +61,11 @@ pub struct TopicInfo {
     pub count: u64,
 }
 
-/// Where the clouds' poses come from.
+/// Where the clouds' poses come from. The points stay in the cloud's own
+/// frame (the sensor's, as the descriptor needs); the pose says where that
+/// frame was (with tf: the cloud's `frame_id` unless a frame is chosen; with
+/// odometry: its child frame, usually `base_link`), for the map and the
+/// thinning along the path.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub enum PoseSource {
     /// The only `nav_msgs/Odometry` topic if there is exactly one, else the
