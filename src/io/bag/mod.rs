@@ -1,7 +1,7 @@
 //! ROS bags: ROS 1 `.bag` (format 2.0, chunks uncompressed, bz2 or lz4) and
 //! rosbag2 MCAP (chunks uncompressed, lz4 or zstd). A bag holds many clouds;
 //! [`BagReader`] yields each cloud of one `sensor_msgs/PointCloud2` topic as
-//! a [`RecordedScan`], with its stamp and, where the bag records one, its
+//! a [`RecordedScan`](crate::io::recording::RecordedScan), with its stamp and, where the bag records one, its
 //! pose (from `nav_msgs/Odometry` or the tf tree), thinned on request.
 //!
 //! Streaming: the bag is never read whole. Bytes come through a
