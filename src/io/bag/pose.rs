@@ -168,3 +168,61 @@ impl Poses {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Translation3, UnitQuaternion};
+
+    fn iso(x: f64, yaw: f64) -> Isometry3<f64> {
+        Isometry3::from_parts(
+            Translation3::new(x, 0.0, 0.0),
+            UnitQuaternion::from_euler_angles(0.0, 0.0, yaw),
+        )
+    }
+
+    #[test]
+    fn series_interpolates_inside_and_clamps_outside() {
+        let mut s = Series::default();
+        assert!(s.at(1.0).is_none());
+        // Pushed out of order: kept sorted.
+        s.push(2.0, iso(10.0, 0.4));
+        s.push(1.0, iso(0.0, 0.0));
+        let mid = s.at(1.25).unwrap();
+        assert!((mid.translation.x - 2.5).abs() < 1e-12);
+        assert!((yaw(&mid) - 0.1).abs() < 1e-12);
+        assert!((s.at(0.0).unwrap().translation.x - 0.0).abs() < 1e-12);
+        assert!((s.at(9.0).unwrap().translation.x - 10.0).abs() < 1e-12);
+    }
+
+    fn tf(parent: &str, child: &str, t: f64, iso: Isometry3<f64>) -> Transform {
+        Transform {
+            stamp: t,
+            parent: parent.into(),
+            child: child.into(),
+            iso,
+        }
+    }
+
+    #[test]
+    fn tf_chains_to_the_root_and_survives_a_cycle() {
+        let mut tree = TfTree::default();
+        assert_eq!(tree.latest, f64::NEG_INFINITY);
+        tree.add(tf("map", "odom", 0.0, iso(1.0, 0.0)), true);
+        tree.add(tf("odom", "base", 0.0, iso(0.0, 0.0)), false);
+        tree.add(
+            tf("odom", "base", 1.0, iso(2.0, std::f64::consts::FRAC_PI_2)),
+            false,
+        );
+        tree.add(tf("base", "laser", 0.0, iso(1.0, 0.0)), true);
+        assert_eq!(tree.latest, 1.0);
+        // At t = 1: map -> odom (1, 0) -> base (2, 0) turned 90 deg -> laser 1 ahead: (3, 1).
+        let p = tree.at("laser", 1.0).unwrap();
+        assert!((p.translation.x - 3.0).abs() < 1e-12 && (p.translation.y - 1.0).abs() < 1e-12);
+        assert!(tree.at("camera", 1.0).is_none());
+        assert_eq!(tree.frames(), ["base", "laser", "map", "odom"]);
+        // A broken tree with a cycle ends (bounded walk) instead of looping.
+        tree.add(tf("laser", "map", 0.0, iso(0.0, 0.0)), true);
+        assert!(tree.at("laser", 1.0).is_some());
+    }
+}
