@@ -23,6 +23,10 @@ pub enum Error {
     /// A KITTI `.bin` file whose size is not a whole number of points.
     #[error("KITTI .bin: {0}")]
     Kitti(String),
+    /// A ROS bag (ROS 1 `.bag` or rosbag2 MCAP) that cannot be read, or a
+    /// cloud, pose or chunk in it that cannot be; the message names the topic.
+    #[error("ROS bag: {0}")]
+    Bag(String),
     /// A poses file that is neither KITTI, TUM nor CSV, or a bad row.
     #[error("poses: {0}")]
     Poses(String),

@@ -2,6 +2,7 @@
 //! files. The format is sniffed from the bytes where the format has a header
 //! (PLY, PCD), else taken from the file name (`.bin` = KITTI).
 
+pub mod bag;
 pub mod csv;
 pub mod kitti;
 pub mod pcd;

@@ -3,6 +3,8 @@
 //! Forms (other tooling scripts against these; add, never rename):
 //! - `placecat info FILE --json`
 //! - `placecat describe [--preset P] [--params FILE.json] INPUT... -o OUT.json`
+//! - `placecat describe BAG... [--topic T] [--every N | --every-metres D] [--pose-topic T | --tf-frame F | --no-poses] [--poses-out POSES.csv] -o OUT.json`
+//! - `placecat topics BAG [--json]`
 //! - `placecat distances DESCRIPTORS.json [-o OUT.csv]`
 //! - `placecat cluster DESCRIPTORS.json --method kmeans --k K --seeding random|stride|plusplus --seed S -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method hkmeans (--threshold T | --categories K) --seed S -o OUT.json`

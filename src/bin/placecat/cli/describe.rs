@@ -1,5 +1,6 @@
 //! `placecat describe` and `placecat distances`.
 
+use super::bag::{is_bag, BagArgs};
 use super::progress;
 use placecat::collection::merge_params;
 use placecat::descriptor::DescriptorParams;
@@ -88,26 +89,35 @@ pub fn run(
     inputs: &[PathBuf],
     output: &Path,
     limits: &ReadLimits,
+    bag_args: &BagArgs,
 ) -> Result<ExitCode> {
     let params = load_params(preset, params)?;
-    let files = expand(inputs)?;
+    let (bags, scans): (Vec<PathBuf>, Vec<PathBuf>) = inputs
+        .iter()
+        .cloned()
+        .partition(|p| p.is_file() && is_bag(p));
+    let files = expand(&scans)?;
     let mut set = DescriptorsFile {
         files: Vec::new(),
         errors: Vec::new(),
         params,
     };
-    for r in describe_files(&files, &set.params, limits, "describing")? {
-        match r {
-            Ok(f) => set.files.push(f),
-            Err(e) => set.errors.push(e),
+    // Bags alone are fine; only files-and-folders inputs need a scan inside.
+    if !files.is_empty() || bags.is_empty() {
+        for r in describe_files(&files, &set.params, limits, "describing")? {
+            match r {
+                Ok(f) => set.files.push(f),
+                Err(e) => set.errors.push(e),
+            }
         }
     }
+    super::bag::describe(&bags, bag_args, limits, &mut set)?;
     let text = serde_json::to_string(&set)?;
     super::write_out(Some(output), &text)?;
     eprintln!(
-        "described {} of {} files -> {}",
+        "described {} of {} scans -> {}",
         set.files.len(),
-        files.len(),
+        set.files.len() + set.errors.len(),
         output.display()
     );
     Ok(if set.files.is_empty() {

@@ -1,5 +1,6 @@
 //! Argument parsing and dispatch.
 
+mod bag;
 mod cluster;
 mod describe;
 mod info;
@@ -48,13 +49,27 @@ enum Command {
         /// JSON file of parameters (fields not given keep the preset's values).
         #[arg(long)]
         params: Option<PathBuf>,
-        /// Files or folders (folders: every scan inside, sorted by name).
+        /// Files or folders (folders: every scan inside, sorted by name),
+        /// and ROS bags (.bag, .mcap): each cloud of the bag's PointCloud2
+        /// topic is one scan, named BAGNAME:TOPIC:INDEX (e.g.
+        /// run.bag:/points:000042, INDEX counted before thinning).
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
         #[arg(short, long)]
         output: PathBuf,
         #[command(flatten)]
         limits: Limits,
+        #[command(flatten)]
+        bag: bag::BagArgs,
+    },
+    /// List the topics of a ROS bag (.bag or rosbag2 .mcap): name, message
+    /// type and message count.
+    Topics {
+        /// The bag: a ROS 1 .bag file, or the .mcap file of a rosbag2 bag.
+        bag: PathBuf,
+        /// Print a JSON array of {name, type, count}.
+        #[arg(long)]
+        json: bool,
     },
     /// Cluster described scans into categories.
     Cluster {
@@ -177,7 +192,16 @@ pub fn main() -> ExitCode {
             inputs,
             output,
             limits,
-        } => describe::run(&preset, params.as_deref(), &inputs, &output, &limits.into()),
+            bag,
+        } => describe::run(
+            &preset,
+            params.as_deref(),
+            &inputs,
+            &output,
+            &limits.into(),
+            &bag,
+        ),
+        Command::Topics { bag, json } => bag::topics(&bag, json),
         Command::Cluster {
             descriptors,
             args,
