@@ -37,7 +37,8 @@ fn bytes(name: &str) -> &'static [u8] {
         "survey.e57",
         "truncated.las",
         "corrupt_chunk.laz",
-        "truncated.e57"
+        "truncated.e57",
+        "single.e57"
     )
 }
 
@@ -137,6 +138,22 @@ fn a_given_origin_is_subtracted_from_every_point() {
         "sum": ([0, 1, 2].map(|a| sum[a] - n * origin[a])),
     });
     check("las14_fmt6.las at an origin", &cloud.points, &shifted);
+    // Other formats are shifted the same way (after their own reading).
+    let single = read_at("single.e57", Some(origin)).unwrap();
+    let exp = &expected()["single.e57"];
+    let sum = triple(&exp["sum"]);
+    let n = single.points.len() as f64;
+    let shifted = serde_json::json!({
+        "points": exp["points"],
+        "finite": exp["finite"],
+        "sum": ([0, 1, 2].map(|a| sum[a] - n * origin[a])),
+    });
+    check("single.e57 at an origin", &single.points, &shifted);
+    refused(
+        read_at("las14_fmt6.las", Some([f64::NAN, 0.0, 0.0])),
+        "las14_fmt6.las",
+        "not finite",
+    );
 }
 
 #[test]
@@ -200,6 +217,14 @@ fn every_scan_of_an_e57_survey_comes_with_its_own_pose_in_its_own_frame() {
     }
     // The scanner's invalid points (no return) are NaN, ten in the office.
     assert_eq!(scans[1].points.iter().filter(|p| p[0].is_nan()).count(), 10);
+}
+
+#[test]
+fn a_single_station_e57_reads_as_one_scan() {
+    let cloud = read("single.e57").unwrap();
+    assert_eq!(cloud.format, Format::E57);
+    assert_eq!(Format::E57.name(), "e57");
+    check("single.e57", &cloud.points, &expected()["single.e57"]);
 }
 
 #[test]

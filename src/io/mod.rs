@@ -189,6 +189,9 @@ pub fn read_scan_at(
     origin: Option<[f64; 3]>,
 ) -> Result<PointCloud> {
     limits.check_bytes(bytes.len())?;
+    if let Some(o) = origin.filter(|o| o.iter().any(|v| !v.is_finite())) {
+        return crate::error::invalid(format!("the sensor position {o:?} is not finite"));
+    }
     let mut cloud = match sniff(bytes, name)? {
         FileKind::Ply => ply::read(bytes, limits),
         FileKind::Pcd => pcd::read(bytes, limits),

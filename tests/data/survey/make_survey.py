@@ -179,9 +179,18 @@ def make_las():
     open(os.path.join(HERE, "corrupt_chunk.laz"), "wb").write(bytes(data))
 
 
+def make_single_e57():
+    """A survey of one station: what `read_scan` takes as one scan."""
+    xyz = room(300, (2.0, 2.0))
+    with pye57.E57(os.path.join(HERE, "single.e57"), mode="w") as e57:
+        e57.write_scan_raw({"cartesianX": xyz[:, 0], "cartesianY": xyz[:, 1], "cartesianZ": xyz[:, 2]})
+    expected["single.e57"] = sums(xyz.astype(np.float32).astype(np.float64))
+
+
 def main():
     make_e57()
     make_las()
+    make_single_e57()
     with open(os.path.join(HERE, "expected.json"), "w") as f:
         json.dump(expected, f, indent=1, sort_keys=True)
         f.write("\n")
