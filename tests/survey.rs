@@ -7,7 +7,7 @@
 //! (`wasm-pack test --node -- --test survey`); reading from paths and the
 //! panic guard around the LAZ decoder are native only.
 
-use placecat::io::e57::read_scans;
+use placecat::io::e57::{for_each_scan, read_scans};
 use placecat::io::recording::RecordedScan;
 use placecat::io::{is_scan_name, read_scan_at, read_scan_named, ReadLimits};
 use placecat::{Format, PointCloud};
@@ -217,6 +217,31 @@ fn every_scan_of_an_e57_survey_comes_with_its_own_pose_in_its_own_frame() {
     }
     // The scanner's invalid points (no return) are NaN, ten in the office.
     assert_eq!(scans[1].points.iter().filter(|p| p[0].is_nan()).count(), 10);
+}
+
+#[test]
+fn a_survey_can_be_read_one_scan_at_a_time_and_stopped() {
+    let mut seen = Vec::new();
+    let stopped = for_each_scan(
+        bytes("survey.e57"),
+        "survey.e57",
+        &ReadLimits::default(),
+        |scan| {
+            seen.push((scan.name, scan.points.len()));
+            if seen.len() == 2 {
+                return Err(placecat::Error::InvalidParameter("enough".into()));
+            }
+            Ok(())
+        },
+    );
+    refused(stopped, "survey.e57", "enough");
+    assert_eq!(
+        seen,
+        [
+            ("survey.e57:hall".to_string(), 900),
+            ("survey.e57:office".to_string(), 700)
+        ]
+    );
 }
 
 #[test]

@@ -28,33 +28,48 @@ pub fn looks_like_e57(bytes: &[u8]) -> bool {
 /// Every scan of an E57 file, from its bytes, in file order. `name` (the
 /// file's name) prefixes the scans' names; errors name the file and scan.
 pub fn read_scans(bytes: &[u8], name: &str, limits: &ReadLimits) -> Result<Vec<RecordedScan>> {
-    limits
-        .check_bytes(bytes.len())
-        .and_then(|()| read_from(Cursor::new(bytes), name, limits))
-        .map_err(|e| e.in_file(name))
+    let mut scans = Vec::new();
+    for_each_scan(bytes, name, limits, |s| {
+        scans.push(s);
+        Ok(())
+    })?;
+    Ok(scans)
 }
 
-/// The one scan of a single-station E57, for [`super::read_scan`]; a survey
-/// of several is refused with the advice to read its scans one by one.
-pub(crate) fn read_single(bytes: &[u8], limits: &ReadLimits) -> Result<PointCloud> {
-    let mut scans = read_from(Cursor::new(bytes), "", limits)?;
-    if scans.len() > 1 {
-        return Err(Error::E57(format!(
-            "the survey holds {} scans; read them one by one (e57::read_scans; placecat describe and info do)",
-            scans.len()
-        )));
-    }
-    let scan = scans.remove(0);
-    Ok(PointCloud {
-        format: Format::E57,
-        points: scan.points,
-    })
+/// [`read_scans`] one scan at a time, so that a survey of many large
+/// stations need not be held whole: `f` gets each scan in file order, and
+/// its error stops the reading.
+pub fn for_each_scan(
+    bytes: &[u8],
+    name: &str,
+    limits: &ReadLimits,
+    f: impl FnMut(RecordedScan) -> Result<()>,
+) -> Result<()> {
+    limits
+        .check_bytes(bytes.len())
+        .and_then(|()| Survey::open(Cursor::new(bytes), name)?.each(limits, f))
+        .map_err(|e| e.in_file(name))
 }
 
 /// Every scan of an E57 file on disk (native only), read through a buffer
 /// rather than whole; errors name the path and scan.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn read_scans_path(path: &std::path::Path, limits: &ReadLimits) -> Result<Vec<RecordedScan>> {
+    let mut scans = Vec::new();
+    for_each_scan_path(path, limits, |s| {
+        scans.push(s);
+        Ok(())
+    })?;
+    Ok(scans)
+}
+
+/// [`for_each_scan`] for a file on disk (native only).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn for_each_scan_path(
+    path: &std::path::Path,
+    limits: &ReadLimits,
+    f: impl FnMut(RecordedScan) -> Result<()>,
+) -> Result<()> {
     let name = path.display().to_string();
     let open = || -> Result<_> {
         let file = std::fs::File::open(path)?;
@@ -62,8 +77,25 @@ pub fn read_scans_path(path: &std::path::Path, limits: &ReadLimits) -> Result<Ve
         Ok(std::io::BufReader::new(file))
     };
     open()
-        .and_then(|r| read_from(r, &name, limits))
+        .and_then(|r| Survey::open(r, &name)?.each(limits, f))
         .map_err(|e| e.in_file(&name))
+}
+
+/// The one scan of a single-station E57, for [`super::read_scan`]; a survey
+/// of several is refused, before any is read, with the advice to read its
+/// scans one by one.
+pub(crate) fn read_single(bytes: &[u8], limits: &ReadLimits) -> Result<PointCloud> {
+    let mut survey = Survey::open(Cursor::new(bytes), "")?;
+    if survey.clouds.len() > 1 {
+        return Err(Error::E57(format!(
+            "the survey holds {} scans; read them one by one (e57::read_scans; placecat describe and info do)",
+            survey.clouds.len()
+        )));
+    }
+    Ok(PointCloud {
+        format: Format::E57,
+        points: survey.scan(0, limits)?.points,
+    })
 }
 
 /// The E57 crate's message (its Display already carries the cause, such as
@@ -72,21 +104,47 @@ fn e57_err(e: ::e57::Error) -> Error {
     Error::E57(e.to_string())
 }
 
-fn read_from<R: Read + Seek>(
-    reader: R,
-    file: &str,
-    limits: &ReadLimits,
-) -> Result<Vec<RecordedScan>> {
-    let mut survey = ::e57::E57Reader::new(reader).map_err(e57_err)?;
-    let clouds = survey.pointclouds();
-    if clouds.is_empty() {
-        return Err(Error::E57(
-            "the file holds no scans (data3D is empty)".into(),
-        ));
+/// An open survey: the scans' headers (from the XML section) and their
+/// unique names, the points read on demand.
+struct Survey<R: Read + Seek> {
+    reader: ::e57::E57Reader<R>,
+    clouds: Vec<::e57::PointCloud>,
+    names: Vec<String>,
+}
+
+impl<R: Read + Seek> Survey<R> {
+    fn open(reader: R, file: &str) -> Result<Self> {
+        let reader = ::e57::E57Reader::new(reader).map_err(e57_err)?;
+        let clouds = reader.pointclouds();
+        if clouds.is_empty() {
+            return Err(Error::E57(
+                "the file holds no scans (data3D is empty)".into(),
+            ));
+        }
+        let mut seen = HashSet::new();
+        let names = clouds
+            .iter()
+            .enumerate()
+            .map(|(i, pc)| unique_name(file, i, pc.name.as_deref(), &mut seen))
+            .collect();
+        Ok(Survey {
+            reader,
+            clouds,
+            names,
+        })
     }
-    let mut seen = HashSet::new();
-    let mut scans = Vec::with_capacity(clouds.len());
-    for (i, pc) in clouds.iter().enumerate() {
+
+    fn each(
+        &mut self,
+        limits: &ReadLimits,
+        mut f: impl FnMut(RecordedScan) -> Result<()>,
+    ) -> Result<()> {
+        (0..self.clouds.len()).try_for_each(|i| f(self.scan(i, limits)?))
+    }
+
+    /// Scan `i`: points in its own frame, invalid ones as NaN.
+    fn scan(&mut self, i: usize, limits: &ReadLimits) -> Result<RecordedScan> {
+        let pc = &self.clouds[i];
         let label = match &pc.name {
             Some(n) if !n.trim().is_empty() => format!("scan {i} ({})", n.trim()),
             _ => format!("scan {i}"),
@@ -100,7 +158,8 @@ fn read_from<R: Read + Seek>(
                 "neither Cartesian nor spherical coordinates".into(),
             ));
         }
-        let mut reader = survey
+        let mut reader = self
+            .reader
             .pointcloud_simple(pc)
             .map_err(|e| in_scan(e.to_string()))?;
         // The scanner's frame, not the survey's: the pose goes with the scan.
@@ -123,7 +182,7 @@ fn read_from<R: Read + Seek>(
                 points.len()
             )));
         }
-        let name = unique_name(file, i, pc.name.as_deref(), &mut seen);
+        let name = self.names[i].clone();
         let stamp = pc.acquisition_start.as_ref().map(|d| d.gps_time);
         let pose = pc.transform.as_ref().map(|t| Pose {
             name: Some(name.clone()),
@@ -131,14 +190,13 @@ fn read_from<R: Read + Seek>(
             position: [t.translation.x, t.translation.y, t.translation.z],
             yaw: yaw_from_quaternion(t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w),
         });
-        scans.push(RecordedScan {
+        Ok(RecordedScan {
             name,
             points,
             stamp,
             pose,
-        });
+        })
     }
-    Ok(scans)
 }
 
 /// `FILE:NAME` with the scan's own name, `FILE:scan N` (N from 0, the
