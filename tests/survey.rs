@@ -388,6 +388,17 @@ mod native {
             &t.display().to_string(),
             "truncated",
         );
+        // Streamed from disk, a survey is not held to the byte cap (only its
+        // scans to the point cap); from bytes it is.
+        let tiny = ReadLimits {
+            max_bytes: 1000,
+            ..ReadLimits::default()
+        };
+        assert_eq!(
+            read_scans_path(&path("survey.e57"), &tiny).unwrap().len(),
+            4
+        );
+        refused(survey("survey.e57", &tiny), "survey.e57", "limit of 1000");
         refused(
             read_path(&path("truncated.las"), &ReadLimits::default()),
             &path("truncated.las").display().to_string(),

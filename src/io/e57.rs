@@ -63,7 +63,10 @@ pub fn read_scans_path(path: &std::path::Path, limits: &ReadLimits) -> Result<Ve
     Ok(scans)
 }
 
-/// [`for_each_scan`] for a file on disk (native only).
+/// [`for_each_scan`] for a file on disk (native only). The file is read a
+/// page at a time, so its size is not held to `limits.max_bytes` (surveys
+/// run to tens of gigabytes); each scan's point count is held to
+/// `limits.max_points`.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn for_each_scan_path(
     path: &std::path::Path,
@@ -71,13 +74,9 @@ pub fn for_each_scan_path(
     f: impl FnMut(RecordedScan) -> Result<()>,
 ) -> Result<()> {
     let name = path.display().to_string();
-    let open = || -> Result<_> {
-        let file = std::fs::File::open(path)?;
-        limits.check_bytes(file.metadata()?.len() as usize)?;
-        Ok(std::io::BufReader::new(file))
-    };
-    open()
-        .and_then(|r| Survey::open(r, &name)?.each(limits, f))
+    std::fs::File::open(path)
+        .map_err(Error::from)
+        .and_then(|file| Survey::open(std::io::BufReader::new(file), &name)?.each(limits, f))
         .map_err(|e| e.in_file(&name))
 }
 
