@@ -315,6 +315,17 @@ fn points_outside_the_headers_bounding_box_are_refused_as_damage() {
         "outside the header's bounding box",
     );
     assert!(msg.contains("x = "), "{msg}");
+    // Read leniently, the box is not checked (a writer that left it stale).
+    let lenient = ReadLimits {
+        lenient: true,
+        ..ReadLimits::default()
+    };
+    let cloud = read_scan_named(&shrunk, "shrunk.las", &lenient).unwrap();
+    check(
+        "shrunk.las, lenient",
+        &cloud.points,
+        &expected()["las12_fmt0.las"],
+    );
 }
 
 #[test]

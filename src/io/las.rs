@@ -18,7 +18,9 @@
 //!   than described around a made-up centre.
 //!
 //! The header's bounding box is also a check of the points: LAZ has no
-//! checksums, and a damaged chunk decodes to points far outside it.
+//! checksums, and a damaged chunk decodes to points far outside it. Read
+//! leniently ([`ReadLimits::lenient`]) the box is not checked, for files
+//! whose writer left it stale.
 //!
 //! Bytes are read in place (no copy of the file); LAZ is decompressed a
 //! batch of points at a time.
@@ -92,7 +94,8 @@ pub fn read(bytes: &[u8], limits: &ReadLimits, origin: Option<[f64; 3]>) -> Resu
         let mut p = [0f32; 3];
         for a in 0..3 {
             let v = f64::from(raw[a]) * scale[a] + offset[a];
-            if v < lo[a] - scale[a].abs() || v > hi[a] + scale[a].abs() {
+            let outside = v < lo[a] - scale[a].abs() || v > hi[a] + scale[a].abs();
+            if outside && !limits.lenient {
                 return err(format!(
                     "point {i} has {} = {v} outside the header's bounding box [{}, {}]: the point data is damaged or the header does not describe it",
                     ["x", "y", "z"][a],

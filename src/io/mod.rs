@@ -36,7 +36,8 @@ pub struct ReadLimits {
     /// bytes after every declared element that are not padding (see
     /// [`MAX_PADDING`]), an element after `vertex` (PLY) that does not parse
     /// to its end, data lines after the last declared one (ascii), and a PCD
-    /// header whose WIDTH x HEIGHT is not POINTS (POINTS is then used).
+    /// header whose WIDTH x HEIGHT is not POINTS (POINTS is then used), a
+    /// LAS/LAZ point outside the header's bounding box.
     /// Lenient accepts these, for users who must read such files anyway. A
     /// row of an ascii body with the wrong number of values is an error
     /// either way: it shifts the points, so no reading of it is right.
