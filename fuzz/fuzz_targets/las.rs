@@ -6,7 +6,7 @@ use libfuzzer_sys::fuzz_target;
 use placecat::io::{las, ReadLimits};
 
 fuzz_target!(|data: &[u8]| {
-    let limits = ReadLimits { max_points: 1 << 20, max_bytes: 1 << 24 };
+    let limits = ReadLimits { max_points: 1 << 20, max_bytes: 1 << 24, ..ReadLimits::default() };
     let _ = las::read(data, &limits, None);
     let _ = las::read(data, &limits, Some([512345.678, 6123456.789, 98.765]));
 });
