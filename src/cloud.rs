@@ -13,6 +13,9 @@ pub enum Format {
     PcdBinary,
     PcdBinaryCompressed,
     KittiBin,
+    Las,
+    Laz,
+    E57,
 }
 
 impl Format {
@@ -26,6 +29,9 @@ impl Format {
             Format::PcdBinary => "pcd_binary",
             Format::PcdBinaryCompressed => "pcd_binary_compressed",
             Format::KittiBin => "kitti_bin",
+            Format::Las => "las",
+            Format::Laz => "laz",
+            Format::E57 => "e57",
         }
     }
 }

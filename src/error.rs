@@ -27,6 +27,13 @@ pub enum Error {
     /// cloud, pose or chunk in it that cannot be; the message names the topic.
     #[error("ROS bag: {0}")]
     Bag(String),
+    /// A LAS/LAZ file that does not follow the format, is damaged, or has no
+    /// usable sensor position.
+    #[error("LAS/LAZ: {0}")]
+    Las(String),
+    /// An E57 file (or one of its scans) that cannot be read.
+    #[error("E57: {0}")]
+    E57(String),
     /// A poses file that is neither KITTI, TUM nor CSV, or a bad row.
     #[error("poses: {0}")]
     Poses(String),

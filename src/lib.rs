@@ -4,7 +4,7 @@
 //! IROS 2017). The pipeline, one module a stage:
 //!
 //! ```text
-//! io (PLY, PCD, KITTI .bin) -> descriptor (NDT grid, shapes, alignment, histogram)
+//! io (PLY, PCD, KITTI .bin, LAS/LAZ, E57) -> descriptor (NDT grid, shapes, alignment, histogram)
 //!   -> distance (prepared matrices, the metric kernel, Delta matrix, Space)
 //!   -> cluster (k-means, k-medoids, hierarchical k-means++, DBSCAN)
 //!   -> eval (confusion, ARI), model (named categories)

@@ -27,6 +27,20 @@ fn fails(cmd: &mut Command) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
+fn read_json(path: &std::path::Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// The names of the described scans in a `describe` OUT.json.
+fn described_names(v: &serde_json::Value) -> Vec<&str> {
+    v["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["name"].as_str().unwrap())
+        .collect()
+}
+
 fn tmp(name: &str) -> std::path::PathBuf {
     let d = std::env::temp_dir().join(format!("placecat-cli-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&d).unwrap();
@@ -86,15 +100,8 @@ fn describe_skips_bad_files_and_distances_write_csv() {
         stderr.contains("c_broken.ply") && stderr.contains("end_header"),
         "{stderr}"
     );
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&out_json).unwrap()).unwrap();
-    let names: Vec<&str> = v["files"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|f| f["name"].as_str().unwrap())
-        .collect();
-    assert_eq!(names, ["a_office.ply", "b_corridor.ply"]);
+    let v = read_json(&out_json);
+    assert_eq!(described_names(&v), ["a_office.ply", "b_corridor.ply"]);
     assert_eq!(
         v["errors"][0]["file"].as_str().unwrap(),
         dir.join("c_broken.ply").display().to_string()
@@ -717,4 +724,87 @@ fn auto_categories_follow_the_data() {
         "/dev/null",
     ]));
     assert!(e.contains("expected a whole number or auto"), "{e}");
+}
+
+/// LAS/LAZ and E57 (tests/data/survey, written by laspy and pye57): `info`
+/// of a survey lists its stations with their poses, `--origin` centres a
+/// georeferenced LAS on its sensor, and `describe` gives one described scan
+/// per station.
+#[test]
+fn surveys_and_georeferenced_las_on_the_command_line() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/survey");
+    let expected: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(format!("{data}/expected.json")).unwrap())
+            .unwrap();
+    let survey = format!("{data}/survey.e57");
+    let out = succeeds(placecat().args(["info", &survey, "--json"]));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["format"], "e57");
+    assert_eq!(v["count"], 2500);
+    assert_eq!(v["finite"], 2490);
+    let scans = v["scans"].as_array().unwrap();
+    assert_eq!(scans.len(), 4);
+    assert_eq!(scans[2]["name"], format!("{survey}:hall (scan 2)"));
+    assert_eq!(
+        scans[1]["pose"]["position"],
+        serde_json::json!([10.0, 2.0, 0.5])
+    );
+    assert_eq!(scans[1]["finite"], 690);
+
+    let geo = format!("{data}/geo14_fmt6.las");
+    let err = fails(placecat().args(["info", &geo]));
+    assert!(
+        err.contains("geo14_fmt6.las") && err.contains("--origin"),
+        "{err}"
+    );
+    let out = succeeds(placecat().args([
+        "info",
+        &geo,
+        "--json",
+        "--origin",
+        "512345.678,6123456.789,98.765",
+    ]));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["format"], "las");
+    let want = &expected["geo14_fmt6.las"]["centred"]["sum"];
+    for a in 0..3 {
+        let (got, want) = (v["sum"][a].as_f64().unwrap(), want[a].as_f64().unwrap());
+        assert!((got - want).abs() < 1e-3, "axis {a}: {got} vs {want}");
+    }
+    let err = fails(placecat().args(["info", &geo, "--origin", "1,2"]));
+    assert!(err.contains("three numbers"), "{err}");
+    let err = fails(placecat().args(["info", &survey, "--origin", "1,2,3"]));
+    assert!(err.contains("does not apply to E57"), "{err}");
+
+    let dir = tmp("survey");
+    let out_json = dir.join("d.json");
+    let out = succeeds(placecat().args([
+        "describe",
+        &survey,
+        &format!("{data}/laz14_fmt6.laz"),
+        &geo,
+        "-o",
+        out_json.to_str().unwrap(),
+    ]));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("described 5 of 6 scans from 3 files"),
+        "{stderr}"
+    );
+    let d = read_json(&out_json);
+    assert_eq!(
+        described_names(&d),
+        [
+            "survey.e57:hall",
+            "survey.e57:office",
+            "survey.e57:hall (scan 2)",
+            "survey.e57:store",
+            "laz14_fmt6.laz"
+        ]
+    );
+    assert!(d["errors"][0]["error"]
+        .as_str()
+        .unwrap()
+        .contains("no sensor position"));
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -4,7 +4,7 @@ use libfuzzer_sys::fuzz_target;
 use placecat::io::{read_scan, ReadLimits};
 
 fuzz_target!(|data: &[u8]| {
-    let limits = ReadLimits { max_points: 1 << 18, max_bytes: 1 << 24 };
+    let limits = ReadLimits { max_points: 1 << 18, max_bytes: 1 << 24, ..ReadLimits::default() };
     // The first byte picks the name, so the .bin path is reached too.
     let name = match data.first().map(|b| b % 3) {
         Some(0) => "scan.bin",

@@ -1,10 +1,12 @@
 //! Readers (and writers, for round trips and the simulator) of point-cloud
 //! files. The format is sniffed from the bytes where the format has a header
-//! (PLY, PCD), else taken from the file name (`.bin` = KITTI).
+//! (PLY, PCD, LAS/LAZ, E57), else taken from the file name (`.bin` = KITTI).
 
 pub mod bag;
 pub mod csv;
+pub mod e57;
 pub mod kitti;
+pub mod las;
 pub mod pcd;
 pub mod ply;
 pub mod poses;
@@ -35,7 +37,8 @@ pub struct ReadLimits {
     /// bytes after every declared element that are not padding (see
     /// [`MAX_PADDING`]), an element after `vertex` (PLY) that does not parse
     /// to its end, data lines after the last declared one (ascii), and a PCD
-    /// header whose WIDTH x HEIGHT is not POINTS (POINTS is then used).
+    /// header whose WIDTH x HEIGHT is not POINTS (POINTS is then used), a
+    /// LAS/LAZ point outside the header's bounding box.
     /// Lenient accepts these, for users who must read such files anyway. A
     /// row of an ascii body with the wrong number of values is an error
     /// either way: it shifts the points, so no reading of it is right.
@@ -114,6 +117,9 @@ pub enum FileKind {
     Ply,
     Pcd,
     KittiBin,
+    /// LAS or LAZ (the header says which).
+    Las,
+    E57,
 }
 
 /// Decide the format: from the bytes when they start like a PLY or PCD
@@ -124,6 +130,12 @@ pub fn sniff(bytes: &[u8], name: &str) -> Result<FileKind> {
     }
     if pcd::looks_like_pcd(bytes) {
         return Ok(FileKind::Pcd);
+    }
+    if self::las::looks_like_las(bytes) {
+        return Ok(FileKind::Las);
+    }
+    if self::e57::looks_like_e57(bytes) {
+        return Ok(FileKind::E57);
     }
     let lower = name.to_ascii_lowercase();
     if lower.ends_with(".bin") {
@@ -139,29 +151,62 @@ pub fn sniff(bytes: &[u8], name: &str) -> Result<FileKind> {
             "the file does not start with a PCD header (VERSION / FIELDS ...)".into(),
         ));
     }
+    if lower.ends_with(".las") || lower.ends_with(".laz") {
+        return Err(Error::Las("the file does not start with \"LASF\"".into()));
+    }
+    if lower.ends_with(".e57") {
+        return Err(Error::E57(
+            "the file does not start with \"ASTM-E57\"".into(),
+        ));
+    }
     if bytes.is_empty() {
         return Err(Error::UnknownFormat("the file is empty".into()));
     }
     Err(Error::UnknownFormat(
-        "not PLY or PCD, and the name does not end in .bin (KITTI)".into(),
+        "not PLY, PCD, LAS/LAZ or E57, and the name does not end in .bin (KITTI)".into(),
     ))
 }
 
 /// True when the name looks like a scan placecat can read (for folder walks).
 pub fn is_scan_name(name: &str) -> bool {
     let lower = name.to_ascii_lowercase();
-    lower.ends_with(".ply") || lower.ends_with(".pcd") || lower.ends_with(".bin")
+    [".ply", ".pcd", ".bin", ".las", ".laz", ".e57"]
+        .iter()
+        .any(|ext| lower.ends_with(ext))
 }
 
 /// Read a scan from its bytes. Errors are not yet wrapped with the file
 /// name; [`read_scan_named`] does that.
 pub fn read_scan(bytes: &[u8], name: &str, limits: &ReadLimits) -> Result<PointCloud> {
+    read_scan_at(bytes, name, limits, None)
+}
+
+/// [`read_scan`] with the sensor position, in the file's coordinates,
+/// subtracted from every point (in float64 for LAS/LAZ, whose coordinates
+/// are often georeferenced; see [`las`] for LAS without one).
+pub fn read_scan_at(
+    bytes: &[u8],
+    name: &str,
+    limits: &ReadLimits,
+    origin: Option<[f64; 3]>,
+) -> Result<PointCloud> {
     limits.check_bytes(bytes.len())?;
-    match sniff(bytes, name)? {
+    if let Some(o) = origin.filter(|o| o.iter().any(|v| !v.is_finite())) {
+        return crate::error::invalid(format!("the sensor position {o:?} is not finite"));
+    }
+    let mut cloud = match sniff(bytes, name)? {
         FileKind::Ply => ply::read(bytes, limits),
         FileKind::Pcd => pcd::read(bytes, limits),
         FileKind::KittiBin => kitti::read(bytes, limits),
+        FileKind::Las => return self::las::read(bytes, limits, origin),
+        FileKind::E57 => self::e57::read_single(bytes, limits),
+    }?;
+    if let Some(o) = origin {
+        for p in &mut cloud.points {
+            *p = std::array::from_fn(|a| (f64::from(p[a]) - o[a]) as f32);
+        }
     }
+    Ok(cloud)
 }
 
 /// [`read_scan`] with the error naming the file.
@@ -172,13 +217,23 @@ pub fn read_scan_named(bytes: &[u8], name: &str, limits: &ReadLimits) -> Result<
 /// Read a scan from disk (native only), errors naming the path.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn read_path(path: &std::path::Path, limits: &ReadLimits) -> Result<PointCloud> {
+    read_path_at(path, limits, None)
+}
+
+/// [`read_path`] with a sensor position, as [`read_scan_at`].
+#[cfg(not(target_arch = "wasm32"))]
+pub fn read_path_at(
+    path: &std::path::Path,
+    limits: &ReadLimits,
+    origin: Option<[f64; 3]>,
+) -> Result<PointCloud> {
     let name = path.display().to_string();
     let meta = std::fs::metadata(path).map_err(|e| Error::from(e).in_file(&name))?;
     limits
         .check_bytes(usize::try_from(meta.len()).unwrap_or(usize::MAX))
         .map_err(|e| e.in_file(&name))?;
     let bytes = std::fs::read(path).map_err(|e| Error::from(e).in_file(&name))?;
-    read_scan_named(&bytes, &name, limits)
+    read_scan_at(&bytes, &name, limits, origin).map_err(|e| e.in_file(&name))
 }
 
 /// Split off the header: returns (header lines, offset of the body). The

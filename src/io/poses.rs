@@ -104,12 +104,18 @@ pub fn parse(text: &str) -> Result<Poses> {
                     name: None,
                     time: Some(v[0]),
                     position: [v[1], v[2], v[3]],
-                    yaw: (2.0 * (qw * qz + qx * qy)).atan2(1.0 - 2.0 * (qy * qy + qz * qz)),
+                    yaw: yaw_from_quaternion(qx, qy, qz, qw),
                 }
             }
         });
     }
     Ok(Poses { format, poses })
+}
+
+/// Heading (rotation about z, radians) of a unit quaternion, as the map
+/// draws it; roll and pitch are left out.
+pub fn yaw_from_quaternion(qx: f64, qy: f64, qz: f64, qw: f64) -> f64 {
+    (2.0 * (qw * qz + qx * qy)).atan2(1.0 - 2.0 * (qy * qy + qz * qz))
 }
 
 fn parse_csv(rows: &[(usize, &str)]) -> Result<Poses> {

@@ -5,7 +5,7 @@ use super::progress;
 use placecat::collection::merge_params;
 use placecat::descriptor::DescriptorParams;
 use placecat::io::csv::quote;
-use placecat::io::{is_scan_name, read_path, ReadLimits};
+use placecat::io::{e57, is_scan_name, read_path_at, ReadLimits};
 use placecat::{Collection, Descriptor, Error, Result};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -18,6 +18,14 @@ pub struct DescribedFile {
     pub name: String,
     pub path: String,
     pub descriptor: Descriptor,
+}
+
+/// How scan files are read: the library's limits, and the sensor position
+/// (`--origin`) for files whose points are not centred on it.
+#[derive(Clone, Copy)]
+pub struct ReadOptions {
+    pub limits: ReadLimits,
+    pub origin: Option<[f64; 3]>,
 }
 
 /// A file that failed, with its error.
@@ -88,7 +96,7 @@ pub fn run(
     params: Option<&Path>,
     inputs: &[PathBuf],
     output: &Path,
-    limits: &ReadLimits,
+    limits: &ReadOptions,
     bag_args: &BagArgs,
 ) -> Result<ExitCode> {
     let params = load_params(preset, params)?;
@@ -111,13 +119,20 @@ pub fn run(
             }
         }
     }
-    super::bag::describe(&bags, bag_args, limits, &mut set)?;
+    super::bag::describe(&bags, bag_args, &limits.limits, &mut set)?;
     let text = serde_json::to_string(&set)?;
     super::write_out(Some(output), &text)?;
+    let scans = set.files.len() + set.errors.len();
+    let inputs = files.len() + bags.len();
+    let of = if scans == inputs {
+        format!("{inputs} files")
+    } else {
+        // E57 surveys give a scan per station, bags a scan per cloud.
+        format!("{scans} scans from {inputs} files")
+    };
     eprintln!(
-        "described {} of {} scans -> {}",
+        "described {} of {of} -> {}",
         set.files.len(),
-        set.files.len() + set.errors.len(),
         output.display()
     );
     Ok(if set.files.is_empty() {
@@ -128,12 +143,13 @@ pub fn run(
 }
 
 /// Read and describe files in parallel (each worker holds one file's
-/// points at a time), with a progress bar; a file that fails is reported
-/// on stderr and comes back as its error, in input order.
+/// points at a time; an E57 survey gives one scan after another), with a
+/// progress bar; a file or scan that fails is reported on stderr and comes
+/// back as its error, in input order.
 pub fn describe_files(
     files: &[PathBuf],
     params: &DescriptorParams,
-    limits: &ReadLimits,
+    opts: &ReadOptions,
     what: &'static str,
 ) -> Result<Vec<std::result::Result<DescribedFile, FileError>>> {
     if files.is_empty() {
@@ -144,24 +160,8 @@ pub fn describe_files(
     let bar = progress::bar(files.len() as u64, what);
     let results: Vec<std::result::Result<DescribedFile, FileError>> = files
         .par_iter()
-        .map(|path| {
-            let shown = path.display().to_string();
-            let out = read_path(path, limits)
-                .and_then(|cloud| {
-                    placecat::describe(&cloud.points, params).map_err(|e| e.in_file(&shown))
-                })
-                .map(|descriptor| DescribedFile {
-                    name: path
-                        .file_name()
-                        .map(|n| n.to_string_lossy().into_owned())
-                        .unwrap_or_default(),
-                    path: shown.clone(),
-                    descriptor,
-                })
-                .map_err(|e| FileError {
-                    file: shown,
-                    error: e.to_string(),
-                });
+        .flat_map_iter(|path| {
+            let out = describe_path(path, params, opts);
             bar.inc(1);
             out
         })
@@ -171,6 +171,73 @@ pub fn describe_files(
         eprintln!("skipped {}", e.error);
     }
     Ok(results)
+}
+
+/// True when the file starts with the E57 signature.
+pub fn is_e57(path: &Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 8];
+    std::fs::File::open(path)
+        .and_then(|mut f| f.read_exact(&mut head))
+        .is_ok()
+        && e57::looks_like_e57(&head)
+}
+
+/// The described scans of one file: one, or one per station of an E57
+/// survey, named `FILE:STATION` (a station that cannot be described is
+/// reported alone; a survey that cannot be read stops there).
+fn describe_path(
+    path: &Path,
+    params: &DescriptorParams,
+    opts: &ReadOptions,
+) -> Vec<std::result::Result<DescribedFile, FileError>> {
+    let shown = path.display().to_string();
+    let base = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let failed = |file: &str, e: Error| FileError {
+        file: file.to_string(),
+        error: e.to_string(),
+    };
+    if !is_e57(path) {
+        let out = read_path_at(path, &opts.limits, opts.origin)
+            .and_then(|cloud| {
+                placecat::describe(&cloud.points, params).map_err(|e| e.in_file(&shown))
+            })
+            .map(|descriptor| DescribedFile {
+                name: base,
+                path: shown.clone(),
+                descriptor,
+            })
+            .map_err(|e| failed(&shown, e));
+        return vec![out];
+    }
+    if opts.origin.is_some() {
+        let e = Error::InvalidParameter(
+            "--origin does not apply to E57: each scan is in its scanner's frame, its pose from the file".into(),
+        );
+        return vec![Err(failed(&shown, e.in_file(&shown)))];
+    }
+    let mut out = Vec::new();
+    let read = e57::for_each_scan_path(path, &opts.limits, |scan| {
+        // The scan's name is `PATH:STATION`; the short name is `FILE:STATION`.
+        let station = scan.name.strip_prefix(shown.as_str()).unwrap_or(&scan.name);
+        out.push(
+            placecat::describe(&scan.points, params)
+                .map(|descriptor| DescribedFile {
+                    name: format!("{base}{station}"),
+                    path: scan.name.clone(),
+                    descriptor,
+                })
+                .map_err(|e| failed(&scan.name, e.in_file(&scan.name))),
+        );
+        Ok(())
+    });
+    if let Err(e) = read {
+        out.push(Err(failed(&shown, e)));
+    }
+    out
 }
 
 pub fn distances(descriptors: &Path, output: Option<&Path>) -> Result<ExitCode> {

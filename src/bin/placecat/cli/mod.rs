@@ -35,11 +35,14 @@ enum Command {
     /// Show what a scan file holds.
     Info {
         file: PathBuf,
-        /// Print one JSON object (format, count, first, last, sum).
+        /// Print one JSON object (format, count, first, last, sum; for an
+        /// E57 survey also scans: name, count, finite, sum, pose of each).
         #[arg(long)]
         json: bool,
         #[command(flatten)]
         lenient: Lenient,
+        #[command(flatten)]
+        origin: Origin,
     },
     /// Compute the NDT-histogram descriptor of every scan.
     Describe {
@@ -154,6 +157,30 @@ struct Limits {
     max_bytes: usize,
     #[command(flatten)]
     lenient: Lenient,
+    #[command(flatten)]
+    origin: Origin,
+}
+
+/// Where the sensor stood, for files whose points are not centred on it.
+#[derive(clap::Args)]
+struct Origin {
+    /// Sensor position X,Y,Z in the files' own coordinates, subtracted from
+    /// every point (in float64 for LAS/LAZ, so georeferenced coordinates
+    /// keep their millimetres). LAS headers do not record it: a
+    /// georeferenced LAS/LAZ is refused without it. Not for E57, whose
+    /// scans are each in their scanner's frame.
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_origin, allow_hyphen_values = true)]
+    origin: Option<[f64; 3]>,
+}
+
+fn parse_origin(s: &str) -> Result<[f64; 3], String> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|c| c.trim().parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect::<Option<_>>()
+        .ok_or_else(|| format!("{s:?}: X,Y,Z must be three finite numbers"))?;
+    v.try_into()
+        .map_err(|_| format!("{s:?}: X,Y,Z must be three numbers, comma-separated"))
 }
 
 /// How strictly a file's body must match its header.
@@ -168,12 +195,15 @@ struct Lenient {
     lenient: bool,
 }
 
-impl From<Limits> for placecat::io::ReadLimits {
+impl From<Limits> for describe::ReadOptions {
     fn from(l: Limits) -> Self {
-        placecat::io::ReadLimits {
-            max_points: l.max_points,
-            max_bytes: l.max_bytes,
-            lenient: l.lenient.lenient,
+        describe::ReadOptions {
+            limits: placecat::io::ReadLimits {
+                max_points: l.max_points,
+                max_bytes: l.max_bytes,
+                lenient: l.lenient.lenient,
+            },
+            origin: l.origin.origin,
         }
     }
 }
@@ -185,7 +215,8 @@ pub fn main() -> ExitCode {
             file,
             json,
             lenient,
-        } => info::run(&file, json, lenient.lenient),
+            origin,
+        } => info::run(&file, json, lenient.lenient, origin.origin),
         Command::Describe {
             preset,
             params,

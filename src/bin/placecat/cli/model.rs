@@ -3,9 +3,9 @@
 //! (also for models exported from the page).
 
 use super::cluster::read_truth;
-use super::describe::{describe_files, expand, DescriptorsFile};
+use super::describe::{describe_files, expand, DescriptorsFile, ReadOptions};
 use placecat::io::csv::quote;
-use placecat::io::ReadLimits;
+
 use placecat::model::LabelledModel;
 use placecat::{Error, Result};
 use std::collections::HashMap;
@@ -61,7 +61,7 @@ pub fn classify(
     model: &Path,
     inputs: &[PathBuf],
     output: Option<&Path>,
-    limits: &ReadLimits,
+    limits: &ReadOptions,
 ) -> Result<ExitCode> {
     let shown = model.display().to_string();
     let text = std::fs::read_to_string(model).map_err(|e| Error::from(e).in_file(&shown))?;
