@@ -208,6 +208,16 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
         (j(0.75 * w, h - inset), plain),
     ];
     let route = Route::new(j(inset + 5.0, 0.5 * h), &legs, 8.0);
+    // The road goes on past the junction where the vehicle turns onto the
+    // path (roads do not end at paths): 80 m more of it, not driven.
+    let (a, b) = (legs[6].0, legs[7].0);
+    let along = [b[0] - a[0], b[1] - a[1]];
+    let l = along[0].hypot(along[1]);
+    let spur = Route::new(
+        b,
+        &[([b[0] + 80.0 * along[0] / l, b[1] + 80.0 * along[1] / l], road)],
+        1.0,
+    );
     let mut s = Vec::new();
     let clear = |p: [f64; 2], m: f64| route.distance(p, m, &[]).is_none();
     let in_field = |p: [f64; 2], margin: f64| {
@@ -318,7 +328,9 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     // path. Stand density 500-900 stems a hectare.
     let stems = u(r, 0.05, 0.09);
     let undergrowth = u(r, 0.01, 0.03);
-    let road_clear = u(r, 3.5, 5.0);
+    // Forest roads: 4-5 m of gravel, shoulders, ditches and cleared verges;
+    // the stand begins 5-7.5 m from the centre line.
+    let road_clear = u(r, 5.0, 7.5);
     let path_clear = u(r, 1.1, 1.6);
     let edge = [u(r, 0.0, TAU), u(r, 0.0, TAU)];
     let on_field = |p: [f64; 2]| {
@@ -335,6 +347,7 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     let forest = |p: [f64; 2], clear_road: f64, clear_path: f64| {
         !on_field(p)
             && route.distance(p, clear_road, &[road]).is_none()
+            && spur.distance(p, clear_road, &[]).is_none()
             && route.distance(p, clear_path, &[path]).is_none()
             && route.distance(p, 4.0, &[plain]).is_none()
             && route.near(p, REACH)
