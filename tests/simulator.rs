@@ -193,3 +193,53 @@ fn indoor_scans_are_the_ones_the_report_was_made_from() {
     assert_eq!((s.points.len(), h), (128521, 0x094c_fef1_569a_5625));
     assert_eq!((s.pitch, s.roll), (0.0, 0.0));
 }
+
+#[test]
+fn the_simulate_command_writes_the_outdoor_route_with_its_poses_and_labels() {
+    let dir = std::env::temp_dir().join(format!("placecat-sim-outdoor-{}", std::process::id()));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_placecat"))
+        .args([
+            "simulate", "--scene", "outdoor", "--seed", "3", "--scans", "9", "-o",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let labels = std::fs::read_to_string(dir.join("labels.csv")).unwrap();
+    assert_eq!(labels.lines().count(), 10);
+    for kind in OUTDOOR_KINDS {
+        assert!(labels.contains(kind), "{kind}: {labels}");
+    }
+    let poses =
+        placecat::io::poses::parse(&std::fs::read_to_string(dir.join("poses_tum.txt")).unwrap())
+            .unwrap()
+            .poses;
+    assert_eq!(poses.len(), 9);
+    // The poses are the simulator's: sensor positions on the route.
+    let sim = plan(SceneKind::Outdoor, 3);
+    let mut p = SimParams::new(SceneKind::Outdoor, 3);
+    p.scans = 9;
+    let nine = Simulation::new(&p).unwrap();
+    for (i, pose) in poses.iter().enumerate() {
+        let want = nine.sensor_pose(i).position;
+        for k in 0..3 {
+            assert!((pose.position[k] - want[k]).abs() < 1e-3, "{i}: {pose:?}");
+        }
+    }
+    let span = |k: usize| {
+        let v = poses.iter().map(|p| p.position[k]);
+        v.clone().fold(f64::NEG_INFINITY, f64::max) - v.fold(f64::INFINITY, f64::min)
+    };
+    assert!(
+        span(0) > 50.0 && span(1) > 50.0,
+        "{} x {}",
+        span(0),
+        span(1)
+    );
+    assert!(sim.len() >= 300);
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -215,7 +215,10 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     let l = along[0].hypot(along[1]);
     let spur = Route::new(
         b,
-        &[([b[0] + 80.0 * along[0] / l, b[1] + 80.0 * along[1] / l], road)],
+        &[(
+            [b[0] + 80.0 * along[0] / l, b[1] + 80.0 * along[1] / l],
+            road,
+        )],
         1.0,
     );
     let mut s = Vec::new();
