@@ -30,6 +30,17 @@ pub struct Ray {
     pub d: [f64; 3],
 }
 
+impl Ray {
+    /// From `o` towards `d` (any length but zero).
+    pub fn towards(o: [f64; 3], d: [f64; 3]) -> Ray {
+        let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        Ray {
+            o,
+            d: [d[0] / n, d[1] / n, d[2] / n],
+        }
+    }
+}
+
 impl Shape {
     /// Distance along the ray to the first hit beyond `t_min`, if any.
     pub fn hit(&self, ray: &Ray, t_min: f64) -> Option<f64> {
@@ -178,11 +189,7 @@ mod tests {
     use super::*;
 
     fn ray(o: [f64; 3], d: [f64; 3]) -> Ray {
-        let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        Ray {
-            o,
-            d: [d[0] / n, d[1] / n, d[2] / n],
-        }
+        Ray::towards(o, d)
     }
 
     #[test]

@@ -140,16 +140,21 @@ impl Route {
 
     /// The bounding box of the route: min and max corners.
     pub fn bounds(&self) -> ([f64; 2], [f64; 2]) {
-        self.points.iter().fold(
-            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
-            |(lo, hi), p| {
-                (
-                    [lo[0].min(p[0]), lo[1].min(p[1])],
-                    [hi[0].max(p[0]), hi[1].max(p[1])],
-                )
-            },
-        )
+        bounds(&self.points)
     }
+}
+
+/// Min and max corners of points.
+fn bounds(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
+    points.iter().fold(
+        ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+        |(lo, hi), p| {
+            (
+                [lo[0].min(p[0]), lo[1].min(p[1])],
+                [hi[0].max(p[0]), hi[1].max(p[1])],
+            )
+        },
+    )
 }
 
 fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
@@ -186,15 +191,7 @@ const CELL: f64 = 10.0;
 
 impl Grid {
     fn new(points: &[[f64; 2]]) -> Grid {
-        let (lo, hi) = points.iter().fold(
-            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
-            |(lo, hi), p| {
-                (
-                    [lo[0].min(p[0]), lo[1].min(p[1])],
-                    [hi[0].max(p[0]), hi[1].max(p[1])],
-                )
-            },
-        );
+        let (lo, hi) = bounds(points);
         let cols = ((hi[0] - lo[0]) / CELL) as usize + 1;
         let rows = ((hi[1] - lo[1]) / CELL) as usize + 1;
         let mut g = Grid {

@@ -232,11 +232,7 @@ mod tests {
     use super::*;
 
     fn ray(o: [f64; 3], d: [f64; 3]) -> Ray {
-        let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        Ray {
-            o,
-            d: [d[0] / n, d[1] / n, d[2] / n],
-        }
+        Ray::towards(o, d)
     }
 
     fn wavy() -> Terrain {
