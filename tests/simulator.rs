@@ -226,8 +226,8 @@ fn the_simulate_command_writes_the_outdoor_route_with_its_poses_and_labels() {
     let nine = Simulation::new(&p).unwrap();
     for (i, pose) in poses.iter().enumerate() {
         let want = nine.sensor_pose(i).position;
-        for k in 0..3 {
-            assert!((pose.position[k] - want[k]).abs() < 1e-3, "{i}: {pose:?}");
+        for (got, want) in pose.position.iter().zip(want) {
+            assert!((got - want).abs() < 1e-3, "{i}: {pose:?}");
         }
     }
     let span = |k: usize| {
