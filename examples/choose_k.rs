@@ -220,9 +220,7 @@ fn summarise(ks: &[usize]) -> String {
 }
 
 fn real_sets() -> Vec<Set> {
-    let real = std::env::var("PLACECAT_REAL").unwrap_or_else(|_| {
-        concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/real").to_string()
-    });
+    let real = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
     let Ok(groups) = std::fs::read_to_string(format!("{real}/groups.csv")) else {
         eprintln!("no {real}/groups.csv: real files left out");
         return vec![];
@@ -356,7 +354,7 @@ fn main() {
     table(&mut out, "Simulated scenes", &sets, &clustering);
     table(
         &mut out,
-        "Real files (`../shared/data/real`)",
+        "Real files (`tests/data/real`)",
         &real_sets(),
         &clustering,
     );

@@ -103,10 +103,9 @@ fn a_tight_and_a_far_wider_group_give_two_for_the_tree() {
     assert_eq!(chosen(&d, DistanceOptions::default()), (2, 3));
 }
 
-/// The real files: `PLACECAT_REAL` if set (a worktree beside no `shared`),
-/// else the usual `../shared/data/real`.
+/// The real files, in the repository (tests/data/real).
 fn real_dir() -> String {
-    std::env::var("PLACECAT_REAL").unwrap_or_else(|_| REAL.to_string())
+    REAL.to_string()
 }
 
 /// The default rule's K for the tree on these real files.

@@ -77,8 +77,9 @@ export function siteSubsample(xyz, max = SITE_POINTS) {
 
 /**
  * Why the first cut has k categories, from the rule that chose k (the
- * core's `choose_k` Choice): its best score, or no structure for one.
- * @param {{k: number, rule: string}} choice
+ * core's `choose_k` Choice): for the default rule, the best mean
+ * silhouette that decided between one category and more.
+ * @param {{k: number, rule: string, one_category?: number | null}} choice
  */
 export function choiceReason({ k, rule, one_category: best }) {
   if (rule === 'silhouette_gap' && typeof best === 'number') {

@@ -21,12 +21,6 @@ pub enum Shape {
     },
     /// Sphere (tree crowns, bushes).
     Sphere { centre: [f64; 3], radius: f64 },
-    /// Ground z = height + amplitude * sin(x / wavelength) * cos(y / wavelength).
-    Ground {
-        height: f64,
-        amplitude: f64,
-        wavelength: f64,
-    },
 }
 
 /// A ray: origin and unit direction.
@@ -34,6 +28,17 @@ pub enum Shape {
 pub struct Ray {
     pub o: [f64; 3],
     pub d: [f64; 3],
+}
+
+impl Ray {
+    /// From `o` towards `d` (any length but zero).
+    pub fn towards(o: [f64; 3], d: [f64; 3]) -> Ray {
+        let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        Ray {
+            o,
+            d: [d[0] / n, d[1] / n, d[2] / n],
+        }
+    }
 }
 
 impl Shape {
@@ -86,37 +91,6 @@ impl Shape {
                 let s = disc.sqrt();
                 [-b - s, -b + s].into_iter().find(|&t| t > t_min)
             }
-            Shape::Ground {
-                height,
-                amplitude,
-                wavelength,
-            } => {
-                if d[2] >= -1e-9 && amplitude == 0.0 {
-                    return None;
-                }
-                let h = |x: f64, y: f64| {
-                    height + amplitude * (x / wavelength).sin() * (y / wavelength).cos()
-                };
-                if d[2] >= -1e-6 {
-                    return None;
-                }
-                // Start on the mean plane, then a few Newton steps on
-                // f(t) = z(t) - h(x(t), y(t)); the ground is gentle.
-                let mut t = (height - o[2]) / d[2];
-                for _ in 0..4 {
-                    let (x, y, z) = (o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]);
-                    let f = z - h(x, y);
-                    let dh = amplitude / wavelength
-                        * ((x / wavelength).cos() * (y / wavelength).cos() * d[0]
-                            - (x / wavelength).sin() * (y / wavelength).sin() * d[1]);
-                    let df = d[2] - dh;
-                    if df.abs() < 1e-9 {
-                        break;
-                    }
-                    t -= f / df;
-                }
-                (t > t_min && t.is_finite()).then_some(t)
-            }
         }
     }
 
@@ -143,7 +117,6 @@ impl Shape {
             Shape::Sphere { centre, radius } => {
                 (((x - centre[0]).powi(2) + (y - centre[1]).powi(2)).sqrt() - radius).max(0.0)
             }
-            Shape::Ground { .. } => 0.0,
         }
     }
 }
@@ -216,11 +189,7 @@ mod tests {
     use super::*;
 
     fn ray(o: [f64; 3], d: [f64; 3]) -> Ray {
-        let n = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        Ray {
-            o,
-            d: [d[0] / n, d[1] / n, d[2] / n],
-        }
+        Ray::towards(o, d)
     }
 
     #[test]

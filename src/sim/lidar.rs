@@ -1,6 +1,7 @@
 //! A spinning multi-beam lidar, ray-cast into a scene.
 
 use super::geometry::{Ray, Shape};
+use super::terrain::{SensorPose, Terrain};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
@@ -27,7 +28,7 @@ pub struct LidarParams {
 impl LidarParams {
     /// A 128-beam wide-angle indoor sensor like an Ouster OS0-128 (90
     /// degrees vertical, ~131k rays): as dense as the real room scans in
-    /// ../shared/data/real (~112k points).
+    /// tests/data/real (~112k points).
     pub fn indoor() -> Self {
         LidarParams {
             beams: 128,
@@ -73,23 +74,34 @@ impl LidarParams {
     }
 }
 
-/// Cast every ray from `position` (sensor heading `yaw`) and return the hits
-/// in the sensor frame.
+/// Cast every ray from the sensor at `pose` into the shapes and the ground
+/// (if any) and return the hits in the sensor frame: a tilted sensor sees
+/// the world tilted, as one on a vehicle does.
 pub fn scan(
     shapes: &[Shape],
-    position: [f64; 3],
-    yaw: f64,
+    ground: Option<&Terrain>,
+    pose: &SensorPose,
     lidar: &LidarParams,
     rng: &mut ChaCha8Rng,
 ) -> Vec<[f32; 3]> {
+    let (position, yaw) = (pose.position, pose.yaw);
+    // A level sensor keeps the plain turn about z (and so the indoor scans
+    // made before tilt existed, bit for bit).
+    let tilt = (pose.pitch != 0.0 || pose.roll != 0.0).then(|| pose.rotation());
     // Only shapes that can be within range matter, and each ray tests only
     // the shapes whose azimuth span covers its sector: forests have
-    // hundreds of trees in range (measured: 435 ms -> see benches).
-    let near: Vec<&Shape> = shapes
+    // hundreds of trees in range (measured: 435 ms -> see benches). Nearest
+    // first, so that a ray stops at the first shape that lies beyond its
+    // nearest hit so far (a forest hides what stands behind its first
+    // trees; outdoor scans took 112 -> ?? ms of CPU).
+    let mut near: Vec<(f64, &Shape)> = shapes
         .iter()
-        .filter(|s| s.horizontal_distance(position[0], position[1]) < lidar.max_range)
+        .map(|s| (s.horizontal_distance(position[0], position[1]), s))
+        .filter(|(d, _)| *d < lidar.max_range)
         .collect();
-    let sectors = sector_index(&near, position);
+    near.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let shapes_near: Vec<&Shape> = near.iter().map(|n| n.1).collect();
+    let sectors = sector_index(&shapes_near, position);
     let noise = Normal::new(0.0, lidar.range_noise.max(1e-12)).expect("finite sigma");
     let (sy, cy) = yaw.sin_cos();
     let mut out = Vec::with_capacity(lidar.beams * lidar.azimuth_steps);
@@ -106,17 +118,37 @@ pub fn scan(
             let (sa, ca) = az.sin_cos();
             // Direction in the sensor frame, then rotated by the heading.
             let local = [ce * ca, ce * sa, se];
-            let d = [
-                cy * local[0] - sy * local[1],
-                sy * local[0] + cy * local[1],
-                local[2],
-            ];
+            let (d, world_az) = match &tilt {
+                None => (
+                    [
+                        cy * local[0] - sy * local[1],
+                        sy * local[0] + cy * local[1],
+                        local[2],
+                    ],
+                    (az + yaw).rem_euclid(std::f64::consts::TAU),
+                ),
+                Some(m) => {
+                    let d = [0, 1, 2]
+                        .map(|k| m[k][0] * local[0] + m[k][1] * local[1] + m[k][2] * local[2]);
+                    (d, d[1].atan2(d[0]).rem_euclid(std::f64::consts::TAU))
+                }
+            };
             let ray = Ray { o: position, d };
-            let mut best = lidar.max_range;
-            let world_az = (az + yaw).rem_euclid(std::f64::consts::TAU);
+            // The ground first: most rays of an outdoor sensor end on it,
+            // and then nothing beyond it needs testing.
+            let mut best = ground
+                .and_then(|g| g.hit(&ray, lidar.min_range, lidar.max_range))
+                .unwrap_or(lidar.max_range);
             let sector =
                 ((world_az / std::f64::consts::TAU * SECTORS as f64) as usize).min(SECTORS - 1);
-            for s in sectors[sector].iter().map(|&k| near[k]) {
+            // A hit on a shape whose footprint is D away horizontally is at
+            // least D / |d_xy| along the ray (1 um of slack for rounding).
+            let reach = d[0].hypot(d[1]);
+            for &k in &sectors[sector] {
+                let (dist, s) = near[k];
+                if dist > best * reach + 1e-6 {
+                    break;
+                }
                 if let Some(t) = s.hit(&ray, lidar.min_range) {
                     if t < best {
                         best = t;
@@ -148,7 +180,6 @@ fn sector_index(shapes: &[&Shape], position: [f64; 3]) -> Vec<Vec<usize>> {
     for (k, s) in shapes.iter().enumerate() {
         // Angular span (centre, half-width); None = every sector.
         let span = match **s {
-            Shape::Ground { .. } => None,
             Shape::Cylinder {
                 centre: [cx, cy],
                 radius,

@@ -4,16 +4,24 @@
 //! - `indoor`: rooms of the five KyushuIndoor kinds (office, kitchen, lab,
 //!   study room, corridor); several room instances per kind, several scans
 //!   per room, each at a free spot with a random heading.
-//! - `warehouse`: one trajectory through a small hall, an airlock and a large
-//!   hall with pallet racks.
-//! - `outdoor`: one trajectory over an open plain, along a forest road and
-//!   down a forest path.
+//! - `warehouse`: an AGV's route round a small hall, through an airlock and
+//!   up and down the aisles of a large hall with loaded pallet racks.
+//! - `outdoor`: a site like EskilstunaField: loops over a field with heaps,
+//!   machines and single trees, a forest road and a forest path, on uneven
+//!   ground.
+//!
+//! Sensors ride on a vehicle: on uneven ground they keep their height above
+//! the ground under the wheels and tilt with it (see [`terrain`]).
 
 pub mod geometry;
 pub mod lidar;
+pub mod route;
 pub mod scenes;
+pub mod sites;
+pub mod terrain;
 
 pub use lidar::LidarParams;
+pub use terrain::SensorPose;
 
 use crate::error::{invalid, Result};
 use crate::io::poses::Pose;
@@ -59,6 +67,10 @@ pub struct SimParams {
     pub buildings: Buildings,
 }
 
+/// Default number of scans along the warehouse and outdoor routes (about
+/// one every 3 m outdoors, one a metre in the warehouse).
+pub const DEFAULT_SEQUENCE_SCANS: usize = 300;
+
 /// Where the simulated indoor rooms come from.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -89,7 +101,11 @@ impl SimParams {
         SimParams {
             scene,
             seed,
-            scans: if scene == SceneKind::Indoor { 40 } else { 150 },
+            scans: if scene == SceneKind::Indoor {
+                40
+            } else {
+                DEFAULT_SEQUENCE_SCANS
+            },
             scans_per_room: 5,
             lidar: None,
             buildings: Buildings::One,
@@ -127,8 +143,25 @@ impl SimParams {
 pub struct SimScan {
     pub name: String,
     pub label: String,
+    /// Position of the sensor and its heading (what poses files hold).
     pub pose: Pose,
+    /// The sensor's tilt with the vehicle (radians; 0 indoors).
+    pub pitch: f64,
+    pub roll: f64,
     pub points: Vec<[f32; 3]>,
+}
+
+/// What the sensor sees: shapes, and the ground if it is not made of them.
+struct Scene {
+    shapes: Vec<geometry::Shape>,
+    ground: Option<terrain::Terrain>,
+}
+
+/// One scan to take: in which scene, from where, and its label.
+struct Shot {
+    scene: usize,
+    pose: SensorPose,
+    label: String,
 }
 
 /// A plan of what to scan, cheap to make; scans are cast one at a time
@@ -137,9 +170,8 @@ pub struct SimScan {
 pub struct Simulation {
     params: SimParams,
     lidar: LidarParams,
-    /// (scene index, position, yaw, label)
-    shots: Vec<(usize, [f64; 3], f64, String)>,
-    scenes: Vec<Vec<geometry::Shape>>,
+    shots: Vec<Shot>,
+    scenes: Vec<Scene>,
 }
 
 impl Simulation {
@@ -165,38 +197,44 @@ impl Simulation {
                             let p = scenes::free_position(&room, &mut r, margin);
                             let z = scenes::u(&mut r, 1.0, 1.3);
                             let yaw = r.random_range(0.0..std::f64::consts::TAU);
-                            shots.push((scenes_out.len(), [p[0], p[1], z], yaw, kind.to_string()));
+                            shots.push(Shot {
+                                scene: scenes_out.len(),
+                                pose: SensorPose::level([p[0], p[1], z], yaw),
+                                label: kind.to_string(),
+                            });
                         }
-                        scenes_out.push(room.shapes);
+                        scenes_out.push(Scene {
+                            shapes: room.shapes,
+                            ground: None,
+                        });
                         left -= take;
                     }
                 }
             }
             SceneKind::Warehouse | SceneKind::Outdoor => {
-                let outdoor = params.scene == SceneKind::Outdoor;
-                scenes_out.push(if outdoor {
-                    scenes::outdoor(&mut r)
+                let site = if params.scene == SceneKind::Outdoor {
+                    sites::outdoor(&mut r)
                 } else {
-                    scenes::warehouse(&mut r)
-                });
-                let (x0, x1, z) = if outdoor {
-                    (2.0, 298.0, 1.73)
-                } else {
-                    (2.0, 84.0, 1.2)
+                    sites::warehouse(&mut r)
                 };
-                let n = params.scans;
-                for i in 0..n {
-                    let x = x0 + (x1 - x0) * (i as f64 + 0.5) / n as f64;
-                    // A gentle wiggle in y, heading along the track.
-                    let y = 0.4 * (x / 9.0).sin();
-                    let yaw = (0.4 / 9.0 * (x / 9.0).cos()).atan() + scenes::u(&mut r, -0.05, 0.05);
-                    let label = if outdoor {
-                        scenes::outdoor_label(x)
-                    } else {
-                        scenes::warehouse_label(x)
+                for stop in site.route.stops(params.scans, site.speed) {
+                    // The vehicle does not hold its heading exactly.
+                    let yaw = stop.heading + scenes::u(&mut r, -0.03, 0.03);
+                    let [x, y] = stop.position;
+                    let pose = match &site.ground {
+                        Some(g) => site.chassis.pose_on(g, x, y, yaw),
+                        None => SensorPose::level([x, y, site.chassis.height], yaw),
                     };
-                    shots.push((0, [x, y, z], yaw, label.to_string()));
+                    shots.push(Shot {
+                        scene: 0,
+                        pose,
+                        label: stop.kind.to_string(),
+                    });
                 }
+                scenes_out.push(Scene {
+                    shapes: site.shapes,
+                    ground: site.ground,
+                });
             }
         }
         Ok(Simulation {
@@ -215,22 +253,52 @@ impl Simulation {
         self.shots.is_empty()
     }
 
+    /// Where scan i is taken from, without casting it (for poses, plots
+    /// and tests).
+    pub fn sensor_pose(&self, i: usize) -> SensorPose {
+        self.shots[i].pose
+    }
+
+    /// The true kind of place of scan i.
+    pub fn label(&self, i: usize) -> &str {
+        &self.shots[i].label
+    }
+
+    /// The ground under scan i, where it is not a floor made of shapes.
+    pub fn ground(&self, i: usize) -> Option<&terrain::Terrain> {
+        self.scenes[self.shots[i].scene].ground.as_ref()
+    }
+
+    /// What stands around scan i (for maps of the site).
+    pub fn shapes(&self, i: usize) -> &[geometry::Shape] {
+        &self.scenes[self.shots[i].scene].shapes
+    }
+
     /// Cast scan i (deterministic: its own RNG stream from the seed).
     pub fn scan(&self, i: usize) -> SimScan {
-        let (scene, pos, yaw, ref label) = self.shots[i];
+        let shot = &self.shots[i];
+        let scene = &self.scenes[shot.scene];
         let mut r = crate::rng::rng(
             self.params.seed ^ (0x9E37_79B9_7F4A_7C15u64.wrapping_mul(i as u64 + 1)),
         );
-        let points = lidar::scan(&self.scenes[scene], pos, yaw, &self.lidar, &mut r);
+        let points = lidar::scan(
+            &scene.shapes,
+            scene.ground.as_ref(),
+            &shot.pose,
+            &self.lidar,
+            &mut r,
+        );
         SimScan {
             name: format!("scan_{i:05}.ply"),
-            label: label.clone(),
+            label: shot.label.clone(),
             pose: Pose {
                 name: None,
                 time: Some(i as f64 * 0.1),
-                position: pos,
-                yaw,
+                position: shot.pose.position,
+                yaw: shot.pose.yaw,
             },
+            pitch: shot.pose.pitch,
+            roll: shot.pose.roll,
             points,
         }
     }

@@ -158,7 +158,7 @@ test('Slot frees what it held when it takes another; scoped frees even when the 
 
 test('the first scan of a data set picks the preset from its far points and is described with it (real scans)', async () => {
   const { readFileSync } = await import('node:fs');
-  const real = new URL('../../../shared/data/real/', import.meta.url) // as tests/e2e/harness.mjs's REAL;
+  const real = new URL('../data/real/', import.meta.url); // tests/data/real, as the e2e harness's REAL
   const d = new Describer(wasm);
   const byPreset = { indoor: wasm.presetParams('indoor'), outdoor: wasm.presetParams('outdoor') };
   const kitti = d.describeSuggesting(readFileSync(new URL('kitti00/000094.bin', real)), '000094.bin', byPreset);

@@ -105,7 +105,7 @@ enum Command {
         scene: String,
         #[arg(long, default_value_t = 0)]
         seed: u64,
-        /// indoor: scans per kind (default 40); others: scans along the path (default 150).
+        /// indoor: scans per kind (default 40); others: scans along the route (default 300).
         #[arg(long)]
         scans: Option<usize>,
         /// indoor: `one` building (rooms of a kind share a plan, the

@@ -1,0 +1,245 @@
+//! The simulated sites: a vehicle-mounted sensor that follows the ground, an
+//! outdoor site and a warehouse that are routes through places, not strips,
+//! and indoor scans unchanged by either.
+
+use placecat::sim::sites::{OUTDOOR_KINDS, WAREHOUSE_KINDS};
+use placecat::sim::{SceneKind, SimParams, Simulation};
+
+fn plan(scene: SceneKind, seed: u64) -> Simulation {
+    Simulation::new(&SimParams::new(scene, seed)).unwrap()
+}
+
+fn extents(sim: &Simulation) -> [f64; 2] {
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for i in 0..sim.len() {
+        let p = sim.sensor_pose(i).position;
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    [hi[0] - lo[0], hi[1] - lo[1]]
+}
+
+fn count(sim: &Simulation, kind: &str) -> usize {
+    (0..sim.len()).filter(|&i| sim.label(i) == kind).count()
+}
+
+/// Total turn of the heading along the route (radians).
+fn turning(sim: &Simulation) -> f64 {
+    (1..sim.len())
+        .map(|i| {
+            let d = sim.sensor_pose(i).yaw - sim.sensor_pose(i - 1).yaw;
+            d.sin().atan2(d.cos()).abs()
+        })
+        .sum()
+}
+
+#[test]
+fn the_outdoor_site_is_a_site_not_a_strip() {
+    for seed in [1, 2, 3] {
+        let sim = plan(SceneKind::Outdoor, seed);
+        assert!(sim.len() >= 300, "{}", sim.len());
+        let [dx, dy] = extents(&sim);
+        assert!(dx > 50.0 && dy > 50.0, "seed {seed}: {dx} x {dy} m");
+        // Loops: more than two full turns in all.
+        assert!(turning(&sim) > 4.0 * std::f64::consts::PI, "seed {seed}");
+        for kind in OUTDOOR_KINDS {
+            let n = count(&sim, kind);
+            assert!(n >= sim.len() / 6, "seed {seed}: {n} scans of {kind}");
+        }
+        // Each kind is visited as a stretch, not scattered: few changes.
+        let changes = (1..sim.len())
+            .filter(|&i| sim.label(i) != sim.label(i - 1))
+            .count();
+        assert_eq!(changes, 3, "seed {seed}");
+    }
+}
+
+#[test]
+fn the_outdoor_sensor_keeps_its_height_above_the_ground_and_tilts_with_it() {
+    let sim = plan(SceneKind::Outdoor, 2);
+    let (mut above, mut under, mut max_pitch) = (vec![], vec![], 0f64);
+    for i in 0..sim.len() {
+        let p = sim.sensor_pose(i);
+        let g = sim.ground(i).expect("outdoor ground");
+        let [x, y, z] = p.position;
+        above.push(z - g.height(x, y));
+        under.push(g.height(x, y));
+        // Pitch and roll from the slope under the vehicle (the wheels
+        // average bumps shorter than the wheelbase: 1.7 degrees allowed).
+        let [gx, gy] = g.gradient(x, y);
+        let (s, c) = p.yaw.sin_cos();
+        let forward = gx * c + gy * s;
+        let left = -gx * s + gy * c;
+        assert!(
+            (p.pitch + forward.atan()).abs() < 0.03,
+            "{i}: pitch {} slope {forward}",
+            p.pitch
+        );
+        assert!(
+            (p.roll - (left * p.pitch.cos()).atan()).abs() < 0.03,
+            "{i}: roll {}",
+            p.roll
+        );
+        max_pitch = max_pitch.max(p.pitch.abs());
+    }
+    let span = |v: &[f64]| {
+        v.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+            - v.iter().cloned().fold(f64::INFINITY, f64::min)
+    };
+    // The ground rises and falls by more than a metre along the route,
+    // the sensor's height above it stays within a few centimetres.
+    assert!(span(&under) > 1.0, "{}", span(&under));
+    assert!(span(&above) < 0.08, "{}", span(&above));
+    let mean = above.iter().sum::<f64>() / above.len() as f64;
+    assert!((1.55..2.0).contains(&mean), "{mean}");
+    assert!(max_pitch > 0.02, "{max_pitch}");
+}
+
+#[test]
+fn a_scan_on_a_slope_sees_the_ground_level_under_the_sensor() {
+    // Outdoor seed 1, scan 40: the ground near the vehicle, in the sensor
+    // frame, lies at minus the sensor height whatever the slope.
+    let sim = plan(SceneKind::Outdoor, 1);
+    let s = sim.scan(40);
+    let p = sim.sensor_pose(40);
+    let g = sim.ground(40).unwrap();
+    let height = p.position[2] - g.height(p.position[0], p.position[1]);
+    let near: Vec<f32> = s
+        .points
+        .iter()
+        .filter(|q| q[0].hypot(q[1]) < 6.0 && q[2] < -1.0)
+        .map(|q| q[2])
+        .collect();
+    assert!(near.len() > 1000, "{}", near.len());
+    let mean = near.iter().sum::<f32>() / near.len() as f32;
+    assert!((mean as f64 + height).abs() < 0.1, "{mean} vs {height}");
+    assert_eq!(s.pitch, p.pitch);
+    assert_eq!(s.pose.position, p.position);
+}
+
+#[test]
+fn the_warehouse_agv_turns_through_both_halls_and_the_airlock() {
+    for seed in [1, 2, 3] {
+        let sim = plan(SceneKind::Warehouse, seed);
+        assert!(sim.len() >= 300, "{}", sim.len());
+        let [dx, dy] = extents(&sim);
+        assert!(dx > 70.0 && dy > 12.0, "seed {seed}: {dx} x {dy} m");
+        assert!(turning(&sim) > 4.0 * std::f64::consts::PI, "seed {seed}");
+        for kind in WAREHOUSE_KINDS {
+            assert!(count(&sim, kind) >= 10, "seed {seed}: {kind}");
+        }
+        for i in 0..sim.len() {
+            let p = sim.sensor_pose(i);
+            let x = p.position[0];
+            let expect = if x < 20.0 {
+                "small_hall"
+            } else if x < 26.0 {
+                "airlock"
+            } else {
+                "large_hall"
+            };
+            assert_eq!(sim.label(i), expect, "seed {seed} scan {i} at x = {x}");
+            // A flat floor: level sensor.
+            assert_eq!((p.pitch, p.roll), (0.0, 0.0));
+            assert!(sim.ground(i).is_none());
+        }
+    }
+}
+
+#[test]
+fn a_seed_makes_one_site_and_another_seed_another() {
+    let (a, b) = (plan(SceneKind::Outdoor, 5), plan(SceneKind::Outdoor, 5));
+    assert_eq!(a.len(), b.len());
+    for i in 0..a.len() {
+        assert_eq!(a.sensor_pose(i), b.sensor_pose(i));
+        assert_eq!(a.label(i), b.label(i));
+    }
+    assert_eq!(a.scan(7), b.scan(7));
+    let c = plan(SceneKind::Outdoor, 6);
+    assert_ne!(a.sensor_pose(7), c.sensor_pose(7));
+    assert_ne!(a.shapes(0).len(), 0);
+}
+
+#[test]
+fn the_number_of_scans_is_honoured() {
+    let mut p = SimParams::new(SceneKind::Outdoor, 1);
+    p.scans = 37;
+    let sim = Simulation::new(&p).unwrap();
+    assert_eq!(sim.len(), 37);
+    for kind in OUTDOOR_KINDS {
+        assert!(count(&sim, kind) > 0, "{kind}");
+    }
+}
+
+#[test]
+fn indoor_scans_are_the_ones_the_report_was_made_from() {
+    // Indoor floors are flat: the sensor stays level and every point is the
+    // same, bit for bit, as before the sensor followed the ground
+    // (fingerprint taken then; docs/experiments.md rests on these scans).
+    let mut p = SimParams::new(SceneKind::Indoor, 1);
+    p.scans = 2;
+    let sim = Simulation::new(&p).unwrap();
+    let s = sim.scan(0);
+    let mut h = 0xcbf2_9ce4_8422_2325u64;
+    for v in s.points.iter().flatten() {
+        for b in v.to_le_bytes() {
+            h ^= b as u64;
+            h = h.wrapping_mul(0x100_0000_01b3);
+        }
+    }
+    assert_eq!((s.points.len(), h), (128521, 0x094c_fef1_569a_5625));
+    assert_eq!((s.pitch, s.roll), (0.0, 0.0));
+}
+
+#[test]
+fn the_simulate_command_writes_the_outdoor_route_with_its_poses_and_labels() {
+    let dir = std::env::temp_dir().join(format!("placecat-sim-outdoor-{}", std::process::id()));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_placecat"))
+        .args([
+            "simulate", "--scene", "outdoor", "--seed", "3", "--scans", "9", "-o",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let labels = std::fs::read_to_string(dir.join("labels.csv")).unwrap();
+    assert_eq!(labels.lines().count(), 10);
+    for kind in OUTDOOR_KINDS {
+        assert!(labels.contains(kind), "{kind}: {labels}");
+    }
+    let poses =
+        placecat::io::poses::parse(&std::fs::read_to_string(dir.join("poses_tum.txt")).unwrap())
+            .unwrap()
+            .poses;
+    assert_eq!(poses.len(), 9);
+    // The poses are the simulator's: sensor positions on the route.
+    let sim = plan(SceneKind::Outdoor, 3);
+    let mut p = SimParams::new(SceneKind::Outdoor, 3);
+    p.scans = 9;
+    let nine = Simulation::new(&p).unwrap();
+    for (i, pose) in poses.iter().enumerate() {
+        let want = nine.sensor_pose(i).position;
+        for (got, want) in pose.position.iter().zip(want) {
+            assert!((got - want).abs() < 1e-3, "{i}: {pose:?}");
+        }
+    }
+    let span = |k: usize| {
+        let v = poses.iter().map(|p| p.position[k]);
+        v.clone().fold(f64::NEG_INFINITY, f64::max) - v.fold(f64::INFINITY, f64::min)
+    };
+    assert!(
+        span(0) > 50.0 && span(1) > 50.0,
+        "{} x {}",
+        span(0),
+        span(1)
+    );
+    assert!(sim.len() >= 300);
+    std::fs::remove_dir_all(&dir).ok();
+}
