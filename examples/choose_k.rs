@@ -31,10 +31,14 @@ struct Set {
 }
 
 /// Coarser level of the true hierarchy: the outdoor forest road and forest
-/// path are both forest (plain vs forest); other kinds stand alone.
+/// path are both forest (plain vs forest); the warehouse's small and large
+/// hall are both halls (halls vs airlock; fixed before the site's first run);
+/// other kinds stand alone.
 fn coarse(label: &str) -> &str {
     if label.starts_with("forest") {
         "forest"
+    } else if label.ends_with("_hall") {
+        "hall"
     } else if label.starts_with("kitti00") {
         "kitti00"
     } else {
@@ -345,7 +349,7 @@ fn main() {
     let mut out = String::new();
     writeln!(
         out,
-        "## Choosing the number of categories: {} seeds\n\nSimulator seeds {:?}{}; clustering seeds 0 to 9 (tree: hierarchical k-means++ cut with `cut_k`; k-means: plusplus seeding). \"found\": the K chosen is the true number of kinds or a coarser level of the true hierarchy (outdoor: plain vs forest; real files: KITTI's two places as one). Accuracy and ARI at the K chosen (`eval::evaluate`). Indoor: {per_kind} scans per kind.",
+        "## Choosing the number of categories: {} seeds\n\nSimulator seeds {:?}{}; clustering seeds 0 to 9 (tree: hierarchical k-means++ cut with `cut_k`; k-means: plusplus seeding). \"found\": the K chosen is the true number of kinds or a coarser level of the true hierarchy (outdoor: plain vs forest; warehouse: halls vs airlock; real files: KITTI's two places as one). Accuracy and ARI at the K chosen (`eval::evaluate`). Indoor: {per_kind} scans per kind.",
         if test { "test" } else { "development" },
         sim_seeds,
         if test { ", indoor (one building) also 11 to 20" } else { "" },
