@@ -365,7 +365,19 @@ fn simulate_describe_cluster_evaluate_round_trip() {
             &["--method", "hkmeans", "--threshold", "NaN"][..],
             "threshold",
         ),
-        (&["--method", "hkmeans"][..], "exactly one of"),
+        // No count is the automatic one (auto_categories_follow_the_data);
+        // two are one too many.
+        (
+            &[
+                "--method",
+                "hkmeans",
+                "--threshold",
+                "1",
+                "--categories",
+                "2",
+            ][..],
+            "not both",
+        ),
     ] {
         let e = fails(
             placecat()
