@@ -365,7 +365,18 @@ fn simulate_describe_cluster_evaluate_round_trip() {
             &["--method", "hkmeans", "--threshold", "NaN"][..],
             "threshold",
         ),
-        (&["--method", "hkmeans"][..], "exactly one of"),
+        // Neither is `--categories auto` (the default); both is an error.
+        (
+            &[
+                "--method",
+                "hkmeans",
+                "--threshold",
+                "1",
+                "--categories",
+                "2",
+            ][..],
+            "not both",
+        ),
     ] {
         let e = fails(
             placecat()

@@ -82,6 +82,28 @@ pub fn run(
     bag_args: &BagArgs,
 ) -> Result<ExitCode> {
     let params = load_params(preset, params)?;
+    let (set, of) = describe_inputs(inputs, params, limits, bag_args, "describing")?;
+    let text = serde_json::to_string(&set)?;
+    super::write_out(Some(output), &text)?;
+    let shown = super::shown(output);
+    eprintln!("described {} of {of} -> {shown}", set.files.len());
+    Ok(if set.files.is_empty() {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// Describe every scan of the inputs (files, folders walked recursively,
+/// bags) with `params`, each named by its path relative to the inputs'
+/// common root; also "N files" or "M scans from N files" for messages.
+pub fn describe_inputs(
+    inputs: &[PathBuf],
+    params: DescriptorParams,
+    limits: &ReadOptions,
+    bag_args: &BagArgs,
+    what: &'static str,
+) -> Result<(DescriptorsFile, String)> {
     let (bags, files): (Vec<Input>, Vec<Input>) =
         expand(inputs)?.into_iter().partition(Input::is_bag);
     let mut set = DescriptorsFile {
@@ -91,7 +113,7 @@ pub fn run(
     };
     // Bags alone are fine; only files-and-folders inputs need a scan inside.
     if !files.is_empty() || bags.is_empty() {
-        for r in describe_files(&files, &set.params, limits, "describing")? {
+        for r in describe_files(&files, &set.params, limits, what)? {
             match r {
                 Ok(f) => set.files.push(f),
                 Err(e) => set.errors.push(e),
@@ -99,9 +121,6 @@ pub fn run(
         }
     }
     super::bag::describe(&bags, bag_args, &limits.limits, &mut set)?;
-    let text = serde_json::to_string(&set)?;
-    super::write_out(Some(output), &text)?;
-    let shown = super::shown(output);
     let scans = set.files.len() + set.errors.len();
     let inputs = files.len() + bags.len();
     let of = if scans == inputs {
@@ -110,19 +129,14 @@ pub fn run(
         // E57 surveys give a scan per station, bags a scan per cloud.
         format!("{scans} scans from {inputs} files")
     };
-    eprintln!("described {} of {of} -> {shown}", set.files.len(),);
-    Ok(if set.files.is_empty() {
-        ExitCode::FAILURE
-    } else {
-        ExitCode::SUCCESS
-    })
+    Ok((set, of))
 }
 
 /// Read and describe files in parallel (each worker holds one file's
 /// points at a time; an E57 survey gives one scan after another), with a
 /// progress bar; a file or scan that fails is reported on stderr and comes
 /// back as its error, in input order.
-pub fn describe_files(
+fn describe_files(
     files: &[Input],
     params: &DescriptorParams,
     opts: &ReadOptions,

@@ -303,7 +303,17 @@ pub fn run(a: &MapArgs) -> Result<ExitCode> {
             Vec::new()
         }
         Some(root) => {
-            let read: Vec<Result<Vec<[f64; 2]>>> = placed
+            // A bag cloud or survey station (`FILE:...`) is not a file.
+            let (files, recorded): (Vec<&Placed>, Vec<&Placed>) = placed
+                .iter()
+                .partition(|p| !super::names::base_name(&p.name).contains(':'));
+            if !recorded.is_empty() {
+                eprintln!(
+                    "{} bag clouds or survey stations: their points are not drawn",
+                    recorded.len()
+                );
+            }
+            let read: Vec<Result<Vec<[f64; 2]>>> = files
                 .par_iter()
                 .map(|p| world_points(p, root, a.points))
                 .collect();

@@ -4,8 +4,7 @@
 
 use super::bag::BagArgs;
 use super::cluster::read_labels;
-use super::describe::{describe_files, DescriptorsFile, ReadOptions};
-use super::names::{expand, Input};
+use super::describe::{describe_inputs, DescriptorsFile, ReadOptions};
 use placecat::io::csv::quote;
 
 use placecat::model::LabelledModel;
@@ -73,29 +72,21 @@ pub fn classify(
     let shown = model.display().to_string();
     let text = std::fs::read_to_string(model).map_err(|e| Error::from(e).in_file(&shown))?;
     let model = LabelledModel::from_json(&text).map_err(|e| e.in_file(&shown))?;
-    let (bags, files): (Vec<Input>, Vec<Input>) =
-        expand(inputs)?.into_iter().partition(Input::is_bag);
-    // The scans are described with the model's own parameters.
-    let mut set = DescriptorsFile {
-        params: model.params.clone(),
-        files: Vec::new(),
-        errors: Vec::new(),
-    };
-    if !files.is_empty() || bags.is_empty() {
-        set.files.extend(
-            describe_files(&files, &set.params, limits, "classifying")?
-                .into_iter()
-                .flatten(),
-        );
-    }
+    // The scans are described with the model's own parameters; a bag's
+    // clouds as `describe BAG` reads them by default.
     let bag_args = BagArgs {
         every: 1,
         ..BagArgs::default()
     };
-    super::bag::describe(&bags, &bag_args, &limits.limits, &mut set)?;
+    let (set, of) = describe_inputs(
+        inputs,
+        model.params.clone(),
+        limits,
+        &bag_args,
+        "classifying",
+    )?;
     let mut out = String::from("file,category,distance,relative\n");
     let mut classified = 0;
-    let scans = set.files.len() + set.errors.len();
     for described in set.files {
         // Described with the model's parameters, a scan matches its shape;
         // should it not, that one file is reported, never the batch ended.
@@ -118,12 +109,7 @@ pub fn classify(
         .expect("writing to a String");
     }
     super::write_out(output, &out)?;
-    let inputs = files.len() + bags.len();
-    if scans == inputs {
-        eprintln!("classified {classified} of {inputs} files");
-    } else {
-        eprintln!("classified {classified} of {scans} scans from {inputs} files");
-    }
+    eprintln!("classified {classified} of {of}");
     Ok(if classified == 0 {
         ExitCode::FAILURE
     } else {
