@@ -2,42 +2,12 @@
 //! and 6): a KITTI-style tree whose sequences repeat file names, `-o -`,
 //! `cluster --format csv`, and `placecat map`.
 
+mod cli_common;
 mod common;
+use cli_common::*;
 use common::*;
 use placecat::io::write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn placecat() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_placecat"))
-}
-
-fn succeeds(cmd: &mut Command) -> Output {
-    let out = cmd.output().unwrap();
-    assert!(
-        out.status.success(),
-        "{cmd:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out
-}
-
-fn fails(cmd: &mut Command) -> String {
-    let out = cmd.output().unwrap();
-    assert!(!out.status.success(), "{cmd:?} succeeded");
-    String::from_utf8_lossy(&out.stderr).into_owned()
-}
-
-fn read_json(path: &Path) -> serde_json::Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("placecat-trees-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 const PER_SEQUENCE: usize = 4;
 

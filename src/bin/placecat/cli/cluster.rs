@@ -254,7 +254,8 @@ pub fn read_labels(path: &Path) -> Result<Labels> {
     Labels::new(read_truth(path)?, path)
 }
 
-pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
+/// The files and labels of a `cluster` OUT.json, errors naming it.
+pub fn read_clusters(clusters: &Path) -> Result<(Vec<String>, Vec<i32>)> {
     let name = clusters.display().to_string();
     let text = std::fs::read_to_string(clusters).map_err(|e| Error::from(e).in_file(&name))?;
     let v: Value = serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
@@ -274,6 +275,12 @@ pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
                 .in_file(&name),
         );
     }
+    Ok((files, labels))
+}
+
+/// `placecat evaluate`: the clustering against `file,label` ground truth.
+pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
+    let (files, labels) = read_clusters(clusters)?;
     let t = truth_for(&files, truth)?;
     let ev = placecat::eval::evaluate(&t, &labels)?;
     super::write_out(None, &format!("{}\n", serde_json::to_string_pretty(&ev)?))?;

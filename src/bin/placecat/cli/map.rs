@@ -8,12 +8,12 @@
 //! point layer is one path of the occupied 2-pixel cells, so its size is
 //! bounded by the picture, not by the number of scans or points.
 
+use super::cluster::read_clusters;
 use super::names::Labels;
 use placecat::io::poses::{self, PoseFormat};
 use placecat::io::{read_path, ReadLimits};
 use placecat::{Error, Result};
 use rayon::prelude::*;
-use serde_json::Value;
 use std::collections::BTreeSet;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -68,28 +68,6 @@ struct Placed {
     label: i32,
     position: [f64; 2],
     yaw: f64,
-}
-
-/// The files and labels of a `cluster` OUT.json.
-fn read_clusters(path: &Path) -> Result<(Vec<String>, Vec<i32>)> {
-    let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&shown))?;
-    let v: Value = serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&shown))?;
-    let not_clusters = |e: serde_json::Error| {
-        Error::Mismatch(format!(
-            "not the output of placecat cluster (\"files\": names, \"labels\": integers): {e}"
-        ))
-        .in_file(&shown)
-    };
-    let files: Vec<String> = serde_json::from_value(v["files"].clone()).map_err(not_clusters)?;
-    let labels: Vec<i32> = serde_json::from_value(v["labels"].clone()).map_err(not_clusters)?;
-    if files.len() != labels.len() {
-        return Err(
-            Error::Mismatch(format!("{} files but {} labels", files.len(), labels.len()))
-                .in_file(&shown),
-        );
-    }
-    Ok((files, labels))
 }
 
 /// Each scan's pose: by order for KITTI/TUM (as many rows as scans), by
