@@ -332,6 +332,39 @@ fn map_draws_the_trajectory_by_category_over_the_points() {
         }
         assert!(svg.len() < 400_000, "{} bytes", svg.len());
     }
+    // CSV poses match by name (here in reverse order, one scan left out):
+    // the path through the named scans, no points (CSV has no heading).
+    let kitti = placecat::io::poses::parse(&std::fs::read_to_string(&poses).unwrap()).unwrap();
+    let files: Vec<String> = serde_json::from_value(clusters["files"].clone()).unwrap();
+    let mut csv = String::from("name,x,y\n");
+    for (f, p) in files.iter().zip(&kitti.poses).skip(1).rev() {
+        csv += &format!("{f},{},{}\n", p.position[0], p.position[1]);
+    }
+    let by_name = dir.join("poses.csv");
+    std::fs::write(&by_name, csv).unwrap();
+    let out = succeeds(
+        placecat()
+            .arg("map")
+            .arg(&c)
+            .arg("--poses")
+            .arg(&by_name)
+            .arg("--scans")
+            .arg(&sim)
+            .args(["-o", "-"]),
+    );
+    let svg = String::from_utf8(out.stdout).unwrap();
+    assert_well_formed(&svg);
+    assert_eq!(svg.matches("<title>").count(), labels.len() - 1);
+    assert!(!svg.contains("id=\"points\""));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("1 of") && stderr.contains("heading"),
+        "{stderr}"
+    );
+    // The first dot drawn is the second scan's, in its category colour.
+    let first = svg.split("<title>").nth(1).unwrap();
+    assert!(first.starts_with(&files[1]), "{first}");
+
     // Poses that do not fit the scans: an error naming the poses file.
     let short = dir.join("short.txt");
     let text = std::fs::read_to_string(&poses).unwrap();

@@ -30,7 +30,7 @@ pub struct MapArgs {
     #[arg(long)]
     poses: PathBuf,
     /// The folder the scans' names are relative to (the folder given to
-    /// `describe`): each scan is read from SCANS/NAME and a subsample of its
+    /// `describe`): each scan is read from ROOT/NAME and a subsample of its
     /// points drawn under the path. Without it the path alone is drawn.
     /// Needs poses with headings (KITTI, TUM); bag clouds and E57 stations
     /// are not drawn.
