@@ -314,7 +314,8 @@ fn truth_for(files: &[impl AsRef<str>], truth: &Path) -> Result<Vec<String>> {
 /// Options of `placecat sweep`.
 #[derive(clap::Args)]
 pub struct SweepArgs {
-    /// `file,label` CSV: adds the ARI and S = ARI x inliers / all.
+    /// `file,label` CSV (matched to the scans as `evaluate --truth` is):
+    /// adds the ARI and S = ARI x inliers / all.
     #[arg(long)]
     pub truth: Option<std::path::PathBuf>,
     /// Epsilons, comma-separated (default: quantiles 0.5 % to 50 % of the
