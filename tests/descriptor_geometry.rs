@@ -1,4 +1,4 @@
-//! The descriptor on known geometry (DESIGN.md Sec. 2).
+//! The descriptor on known geometry (docs/design.md#descriptor).
 
 mod common;
 use common::*;

@@ -1,4 +1,4 @@
-//! The NDT-histogram appearance descriptor (DESIGN.md Sec. 2):
+//! The NDT-histogram appearance descriptor (docs/design.md#descriptor):
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices.
 

@@ -1,5 +1,5 @@
 //! Descriptor parameters (paper Tab. II) with the `indoor` and `outdoor`
-//! presets, plus the variants of DESIGN.md Sec. 2b. One height band and the
+//! presets, plus the variants of docs/design.md#variants. One height band and the
 //! Tab. II values give exactly the paper's descriptor.
 
 use crate::error::{invalid, Result};
@@ -152,7 +152,7 @@ impl DescriptorParams {
         }
     }
 
-    /// Close to the public C++ implementation (DESIGN.md Sec. 6), for
+    /// Close to the public C++ implementation (docs/design.md#perception-oru), for
     /// comparison: te = 0.02, at least 3 points, three ranges split at 5 and
     /// 10 m with the far one left out, per-range normalisation.
     pub fn perception_oru() -> Self {
@@ -166,7 +166,7 @@ impl DescriptorParams {
         }
     }
 
-    /// Sec. 2b variant: height bands, no far ranges, te = 0.1 (for a sensor
+    /// The variant of docs/design.md#variants: height bands, no far ranges, te = 0.1 (for a sensor
     /// about 1.2 m above the floor).
     pub fn indoor_bands() -> Self {
         DescriptorParams {

@@ -1,5 +1,5 @@
 //! The space clustering works in: prepared descriptors, their metric, and
-//! centres (element-wise means of normalised matrices, DESIGN.md Sec. 3).
+//! centres (element-wise means of normalised matrices, docs/design.md#clustering).
 
 use super::{
     delta_prepared, matrix_distance, prepare_all, size_factor, DistanceMatrix, DistanceOptions,
