@@ -1,6 +1,6 @@
 //! The `placecat` command line: the forms other tooling scripts against.
 
-mod common;
+use crate::common;
 use common::*;
 use placecat::io::write::{self, PlyEncoding};
 use std::process::{Command, Output};
