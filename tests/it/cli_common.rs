@@ -1,6 +1,5 @@
 //! Helpers of the command-line tests: run the built `placecat`, require
 //! success or failure, read its JSON, make a scratch folder.
-#![allow(dead_code)]
 
 use std::process::{Command, Output};
 

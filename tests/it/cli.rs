@@ -1,8 +1,7 @@
 //! The `placecat` command line: the forms other tooling scripts against.
 
-mod cli_common;
-mod common;
-use cli_common::*;
+use crate::cli_common::*;
+use crate::common;
 use common::*;
 use placecat::io::write::{self, PlyEncoding};
 

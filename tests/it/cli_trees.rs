@@ -2,9 +2,8 @@
 //! and 6): a KITTI-style tree whose sequences repeat file names, `-o -`,
 //! `cluster --format csv`, and `placecat map`.
 
-mod cli_common;
-mod common;
-use cli_common::*;
+use crate::cli_common::*;
+use crate::common;
 use common::*;
 use placecat::io::write;
 use std::path::{Path, PathBuf};
