@@ -6,15 +6,25 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Format {
+    /// PLY, `format ascii 1.0`.
     PlyAscii,
+    /// PLY, `format binary_little_endian 1.0`.
     PlyBinaryLittleEndian,
+    /// PLY, `format binary_big_endian 1.0`.
     PlyBinaryBigEndian,
+    /// PCD v0.7, `DATA ascii`.
     PcdAscii,
+    /// PCD v0.7, `DATA binary`.
     PcdBinary,
+    /// PCD v0.7, `DATA binary_compressed` (LZF).
     PcdBinaryCompressed,
+    /// KITTI velodyne `.bin`: float32 x, y, z, intensity, no header.
     KittiBin,
+    /// LAS (ASPRS 1.0-1.4), uncompressed.
     Las,
+    /// LAZ: LAS compressed with LASzip.
     Laz,
+    /// One scan of an E57 (ASTM E2807) survey.
     E57,
 }
 
@@ -40,7 +50,9 @@ impl Format {
 /// `info` can show the file as it is); the descriptor drops non-finite points.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PointCloud {
+    /// The format the bytes were read as (sniffed, or from the file name).
     pub format: Format,
+    /// x, y, z of each point in the sensor frame (m), in file order.
     pub points: Vec<[f32; 3]>,
 }
 

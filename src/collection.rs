@@ -260,9 +260,9 @@ impl Collection {
     }
 
     /// How many categories the scans hold, by the default rule of
-    /// [`choose_k`](crate::cluster::choose_k) (one category when they are
-    /// all alike): for `tree`'s cut when a tree is given (built with
-    /// `hk`), else for k-means with `kmeans` (its `k` is ignored). The
+    /// [`choose_k`] (one category when they are all alike): for `tree`'s
+    /// cut when a tree is given (built with `hk`), else for k-means with
+    /// `kmeans` (its `k` is ignored). The
     /// exact silhouette on the Delta matrix where the set has one, else a
     /// sampled one; no n x n matrix is built above [`MATRIX_LIMIT`].
     pub fn choose_categories(

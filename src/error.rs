@@ -10,7 +10,9 @@ pub enum Error {
     /// Wraps another error with the name of the file it concerns.
     #[error("{file}: {source}")]
     InFile {
+        /// The file's name as the user gave it (or a scan's name).
         file: String,
+        /// What went wrong with it.
         #[source]
         source: Box<Error>,
     },
@@ -55,8 +57,10 @@ pub enum Error {
     /// Inputs that do not fit together (descriptors of different shapes, ...).
     #[error("mismatch: {0}")]
     Mismatch(String),
+    /// Reading or writing a file failed (not found, permission, cut short).
     #[error("I/O: {0}")]
     Io(#[from] std::io::Error),
+    /// JSON that does not parse, or does not fit the expected shape.
     #[error("JSON: {0}")]
     Json(#[from] serde_json::Error),
 }

@@ -89,6 +89,8 @@
 //! }
 //! ```
 
+#![warn(missing_docs)]
+
 pub mod cloud;
 pub mod cluster;
 pub mod collection;

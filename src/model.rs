@@ -15,6 +15,7 @@ pub const MODEL_FORMAT: &str = "placecat-model/1";
 /// One named category.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Category {
+    /// The name the user gave it.
     pub name: String,
     /// Cluster label this category came from.
     pub label: i32,
@@ -115,8 +116,11 @@ pub struct CategorySummary {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Classification {
+    /// The category's name.
     pub name: String,
+    /// The cluster label of the category.
     pub label: i32,
+    /// Delta from the scan to the category's centre.
     pub distance: f32,
     /// distance / the category's radius (> 1: farther than any member was).
     /// A category made from one scan has radius 0: a scan at distance 0 (the

@@ -54,7 +54,7 @@ fn descriptor_from_json(json: &str) -> crate::Result<Descriptor> {
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_NAMES: &'static str = r#"
-/** A parameter preset (paper Tab. II: indoor, outdoor; DESIGN Sec. 2b: indoor_bands; the public C++ code's settings: perception_oru). */
+/** A parameter preset (paper Tab. II: indoor, outdoor; docs/design.md#variants: indoor_bands; the public C++ code's settings: perception_oru). */
 export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru";
 /** k-means seeding: random scans, stride ("deterministic": scan i*n/k), or k-means++. */
 export type Seeding = "random" | "stride" | "deterministic" | "plusplus";

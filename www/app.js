@@ -78,9 +78,9 @@ async function loadPoses(file, name) {
   if (state.scans.length) render();
 }
 
-/** @param {'indoor' | 'outdoor'} scene */
+/** @param {S.Scene} scene */
 function startDemo(scene) {
-  setPreset(scene);
+  setPreset(S.DEMO_PRESET[scene]);
   describeAll({ ...S.demoInputs(scene), demo: scene });
 }
 
@@ -226,6 +226,7 @@ async function main() {
   on('truth', 'change', (e) => e.target.files[0] && loadTruth(e.target.files[0]));
   on('demo-indoor', 'click', () => startDemo('indoor'));
   on('demo-outdoor', 'click', () => startDemo('outdoor'));
+  on('demo-warehouse', 'click', () => startDemo('warehouse'));
   on('cancel', 'click', () => state.running && pool.cancel());
   dropZone($('drop'), loadFiles);
   on('preset', 'change', () => { showPreset(); if (state.inputs.length) describeAll(); });

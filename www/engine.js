@@ -144,26 +144,14 @@ export class Engine {
   }
 
   /**
-   * The first cut of the kept tree: how many categories, and why. The rule
-   * that picks it from the data (issue 14 item 3) is not in the wasm API
-   * yet; until it is, this is the page's old default, 5 (at most one per
-   * scan). Wiring the rule is the one line marked below.
+   * The first cut of the kept tree: how many categories the rule chose from
+   * the data (issue 14 item 3: the core's choose_k, `silhouette_gap` by
+   * default; one category when the scans look like one place), and why.
    * @returns {{k: number, why: string}}
    */
   suggestCategories() {
-    const n = this.set.get('scans').length;
-    const choice = this.#ruleChoice();
-    if (choice) return { k: choice.k, why: choiceReason(choice) };
-    return { k: Math.min(5, n), why: n === 1 ? 'one scan' : n <= 5 ? `one per scan (${n} scans)` : 'the default of 5 (no rule in this build yet)' };
-  }
-
-  /**
-   * The rule's choice for the kept tree (the core's choose_k Choice: k, rule,
-   * scores, one_category).
-   * @returns {{k: number, rule: string, one_category?: number | null} | null}
-   */
-  #ruleChoice() {
-    return this.set.get('scans').chooseCategories(this.tree.get('tree'));
+    const choice = this.set.get('scans').chooseCategories(this.tree.get('tree'));
+    return { k: choice.k, why: choiceReason(choice) };
   }
 
   /** Delta between two scans of the set. @param {number} i @param {number} j @returns {number} */

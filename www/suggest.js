@@ -32,12 +32,15 @@ export function rangeShare(xyz) {
  * together and outdoor resolves it: outdoor from 14 % of the points on.
  * Why 15 m and 14 %: the share beyond 15 m separates the scans in tests
  * with a gap; beyond 10 m it does not. Measured (beyond 15 m / beyond 10 m):
- * KITTI 00, a road: 17-26 % / 36-45 %; the outdoor demo (the old strip,
- * every 9th scan): 18-27 % / 29-43 %; an Ouster OS0 in an enclosed space
+ * KITTI 00, a road: 17-26 % / 36-45 %; the outdoor demo (the site of
+ * src/sim/sites.rs, seed 1, every 9th scan): 18-34 % / 31-48 % (the old
+ * strip it replaced: 18-27 % / 29-43 %); an Ouster OS0 in an enclosed space
  * with walls ~12 m away: 9-11 % / 26-28 %; velodyne_pair (outdoors, but
  * half its points within 3.5 m, where the outdoor preset is blind): 4 % /
  * 9 %; pcl_room and the indoor demo's rooms: under 1 %. 14 % lies in the
- * gap 11-17 % (near its geometric middle).
+ * gap 11-17 % (near its geometric middle). The warehouse demo's scans
+ * spread over it (0-16 % / 6-36 %: a large hall's far racks); its first
+ * scan, in the small hall, has 2 %, and the demo uses indoor anyway.
  * @param {number} farShare @returns {'indoor' | 'outdoor'}
  */
 export function suggestPreset(farShare) {

@@ -22,6 +22,7 @@ use super::shape::{Shape, ShapedCell};
 /// A rotation as three rows (the new x, y, z axes in the sensor frame).
 pub type Rotation = [[f64; 3]; 3];
 
+/// No rotation: the sensor's own frame (alignment `none`, or no planar voxel).
 pub const IDENTITY: Rotation = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
 /// Apply a rotation to a vector.

@@ -51,6 +51,8 @@ const Z_BINS: usize = 24;
 const PHI_BINS: usize = 48;
 
 impl DirectionIndex {
+    /// Index `dirs` (unit vectors on the upper hemisphere); lookups then give
+    /// the same answer as [`nearest`] over them.
     pub fn new(dirs: Vec<[f64; 3]>) -> DirectionIndex {
         let line_angle = |a: &[f64; 3], b: &[f64; 3]| {
             (a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
@@ -142,6 +144,7 @@ impl DirectionIndex {
         idx
     }
 
+    /// The indexed directions, in the order lookups number them.
     pub fn directions(&self) -> &[[f64; 3]] {
         &self.dirs
     }

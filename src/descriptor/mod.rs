@@ -1,4 +1,4 @@
-//! The NDT-histogram appearance descriptor (DESIGN.md Sec. 2):
+//! The NDT-histogram appearance descriptor (docs/design.md#descriptor):
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices.
 
@@ -26,8 +26,11 @@ pub struct Summary {
     pub voxels: usize,
     /// Occupied voxels skipped for having too few points.
     pub sparse_voxels: usize,
+    /// Voxels classified spherical (in range or not).
     pub spherical: usize,
+    /// Voxels classified planar.
     pub planar: usize,
+    /// Voxels classified linear.
     pub linear: usize,
     /// Voxels counted in at least one range interval.
     pub in_range: usize,
@@ -41,10 +44,14 @@ pub struct Summary {
 /// A scan's descriptor: one count matrix F per candidate orientation.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Descriptor {
+    /// Rows of each F: shape classes (ns + np + nl) times height bands.
     pub rows: usize,
+    /// Columns of each F: the range intervals.
     pub cols: usize,
     /// Row-major count matrices, one per candidate orientation.
     pub matrices: Vec<Vec<u32>>,
+    /// What describing the scan found (points, voxels, classes), for display
+    /// and the unreliable flag.
     pub summary: Summary,
 }
 

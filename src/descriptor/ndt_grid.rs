@@ -18,7 +18,9 @@ struct Sums {
 /// A voxel with enough points: its mean and covariance.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cell {
+    /// Points in the voxel.
     pub count: u32,
+    /// Mean of its points in the sensor frame (m).
     pub mean: [f64; 3],
     /// Sample covariance, row-major 3x3.
     pub cov: [[f64; 3]; 3],
@@ -27,6 +29,7 @@ pub struct Cell {
 /// The result of gridding one scan.
 #[derive(Debug, Clone)]
 pub struct Grid {
+    /// The voxels with at least `min_points_per_voxel` points.
     pub cells: Vec<Cell>,
     /// Finite points used.
     pub points: usize,

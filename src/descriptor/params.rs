@@ -1,6 +1,6 @@
 //! Descriptor parameters (paper Tab. II) with the `indoor` and `outdoor`
-//! presets, plus the variants of DESIGN.md Sec. 2b. One height band and the
-//! Tab. II values give exactly the paper's descriptor.
+//! presets, plus the variants of docs/design.md#variants. One height band
+//! and the Tab. II values give exactly the paper's descriptor.
 
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
@@ -72,12 +72,15 @@ pub struct DescriptorParams {
     /// Height band edges in metres relative to the sensor (sorted); empty =
     /// one band (the paper). k edges give k + 1 bands.
     pub height_bands: Vec<f64>,
+    /// How candidate orientations are found (the paper's, yaw only, or none).
     pub alignment: Alignment,
     /// Cap on candidate orientations per scan.
     pub max_alignments: usize,
     /// Directions in the fine histogram used to find dominant normals.
     pub alignment_directions: usize,
+    /// How F is normalised before comparing (the paper divides by |F|).
     pub normalisation: Normalisation,
+    /// The distance between normalised matrices (the paper's column-wise L2).
     pub metric: Metric,
     /// Scans with fewer classified voxels are flagged unreliable.
     pub min_voxels: usize,
@@ -152,9 +155,10 @@ impl DescriptorParams {
         }
     }
 
-    /// Close to the public C++ implementation (DESIGN.md Sec. 6), for
-    /// comparison: te = 0.02, at least 3 points, three ranges split at 5 and
-    /// 10 m with the far one left out, per-range normalisation.
+    /// Close to the public C++ implementation
+    /// (docs/design.md#perception-oru), for comparison: te = 0.02, at least
+    /// 3 points, three ranges split at 5 and 10 m with the far one left
+    /// out, per-range normalisation.
     pub fn perception_oru() -> Self {
         DescriptorParams {
             preset: "perception_oru".into(),
@@ -166,8 +170,8 @@ impl DescriptorParams {
         }
     }
 
-    /// Sec. 2b variant: height bands, no far ranges, te = 0.1 (for a sensor
-    /// about 1.2 m above the floor).
+    /// The variant of docs/design.md#variants: height bands, no far
+    /// ranges, te = 0.1 (for a sensor about 1.2 m above the floor).
     pub fn indoor_bands() -> Self {
         DescriptorParams {
             preset: "indoor_bands".into(),

@@ -9,15 +9,20 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Shape {
+    /// No dominant direction: lambda1 >= te * lambda2 and lambda2 >= te * lambda3.
     Spherical,
+    /// A surface patch: lambda1 < te * lambda2 (not linear).
     Planar,
+    /// An edge, pole or wire: lambda2 < te * lambda3.
     Linear,
 }
 
 /// A classified voxel.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShapedCell {
+    /// Mean of the voxel's points in the sensor frame (m).
     pub mean: [f64; 3],
+    /// Its shape class.
     pub shape: Shape,
     /// lambda1 <= lambda2 <= lambda3, after regularisation.
     pub eigenvalues: [f64; 3],

@@ -5,12 +5,15 @@ use serde::{Deserialize, Serialize};
 /// A symmetric n x n matrix of Delta, row-major, zero diagonal.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DistanceMatrix {
+    /// Number of scans.
     pub n: usize,
+    /// n * n values, Delta(i, j) at `i * n + j`.
     pub data: Vec<f32>,
 }
 
 impl DistanceMatrix {
     #[inline]
+    /// Delta between scans i and j.
     pub fn get(&self, i: usize, j: usize) -> f32 {
         self.data[i * self.n + j]
     }

@@ -30,7 +30,9 @@ use serde::{Deserialize, Serialize};
 /// How two descriptors are compared.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub struct DistanceOptions {
+    /// How each matrix F is normalised (by |F|, or per column).
     pub normalisation: Normalisation,
+    /// The distance between two normalised matrices.
     pub metric: Metric,
 }
 

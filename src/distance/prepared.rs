@@ -8,7 +8,9 @@ use crate::error::Result;
 /// A descriptor with its matrices normalised once, for many comparisons.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Prepared {
+    /// Rows of each matrix (classes times height bands), before padding.
     pub rows: usize,
+    /// Columns of each matrix (range intervals).
     pub cols: usize,
     /// |F|.
     pub total: f32,
@@ -21,6 +23,7 @@ pub struct Prepared {
     /// (measured: see [`delta_prepared`](super::delta_prepared)). Every metric gives the same
     /// value with or without the zero rows, so this is the only copy.
     pub padded: Vec<f32>,
+    /// Rows of each padded column: `rows` rounded up to a multiple of 4.
     pub stride: usize,
 }
 
@@ -62,6 +65,9 @@ fn extend_column_major_padded(
 }
 
 impl Prepared {
+    /// Check `d` (a matrix of rows x cols entries each) and normalise and
+    /// pad its matrices as `opts` says; an invalid descriptor is an error
+    /// here, not a NaN later.
     pub fn new(d: &Descriptor, opts: DistanceOptions) -> Result<Prepared> {
         d.validate()?;
         let total = d.total() as f32;

@@ -1,5 +1,6 @@
 //! The space clustering works in: prepared descriptors, their metric, and
-//! centres (element-wise means of normalised matrices, DESIGN.md Sec. 3).
+//! centres (element-wise means of normalised matrices,
+//! docs/design.md#clustering).
 
 use super::{
     delta_prepared, matrix_distance, prepare_all, size_factor, DistanceMatrix, DistanceOptions,
@@ -11,7 +12,9 @@ use crate::error::Result;
 /// Prepared descriptors and the metric to compare them with.
 #[derive(Debug, Clone)]
 pub struct Space {
+    /// One prepared descriptor per scan, in scan order.
     pub items: Vec<Prepared>,
+    /// The metric every Delta here uses.
     pub metric: Metric,
 }
 
@@ -20,10 +23,13 @@ pub struct Space {
 pub struct Centre {
     /// Column-major and padded as [`Prepared::padded`] (`stride` rows).
     pub matrix: Vec<f32>,
+    /// The members' mean |F|, the centre's size in Delta's size factor.
     pub total: f32,
 }
 
 impl Space {
+    /// Prepare every descriptor once with `opts`. Descriptors of different
+    /// shapes, or an invalid one (named by its index), are an error.
     pub fn new(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<Space> {
         Ok(Space {
             items: prepare_all(descriptors, opts)?,
@@ -31,10 +37,12 @@ impl Space {
         })
     }
 
+    /// Number of scans.
     pub fn len(&self) -> usize {
         self.items.len()
     }
 
+    /// True when there is no scan.
     pub fn is_empty(&self) -> bool {
         self.items.is_empty()
     }

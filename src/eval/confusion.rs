@@ -11,7 +11,9 @@ use std::collections::BTreeSet;
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "lowercase")]
 pub enum Mapping {
+    /// One-to-one, maximising the scans matched (no more clusters than classes).
     Hungarian,
+    /// Each cluster to its most frequent class (more clusters than classes).
     Majority,
 }
 
@@ -21,17 +23,24 @@ pub enum Mapping {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Confusion {
+    /// The ground-truth classes, sorted.
     pub rows: Vec<String>,
+    /// The same classes, then "unassigned".
     pub cols: Vec<String>,
+    /// Scans of row class r predicted as column c, `counts[r][c]`.
     pub counts: Vec<Vec<usize>>,
     /// Row-normalised rates (paper Tab. I).
     pub rates: Vec<Vec<f64>>,
+    /// Share of all scans whose cluster maps to their own class (0..1).
     pub accuracy: f64,
+    /// How clusters were mapped to classes.
     pub mapping: Mapping,
     /// cluster label -> class name (None: unassigned).
     pub cluster_class: Vec<(i32, Option<String>)>,
 }
 
+/// The confusion matrix of `labels` (-1 = noise) against the class names
+/// `truth`, one of each per scan.
 pub fn confusion(truth: &[String], labels: &[i32]) -> Confusion {
     let classes: Vec<String> = truth
         .iter()

@@ -18,13 +18,17 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Evaluation {
+    /// Share of all scans put in a cluster mapped to their class (0..1).
     pub accuracy: f64,
     /// ARI over the inliers (all scans when there is no noise).
     pub ari: f64,
     /// S = ari * inliers / all (= ari without noise).
     pub score: f64,
+    /// Scans not labelled noise.
     pub inliers: usize,
+    /// All scans.
     pub total: usize,
+    /// The confusion matrix behind `accuracy`.
     pub confusion: Confusion,
 }
 

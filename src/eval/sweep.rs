@@ -10,8 +10,11 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct SweepPoint {
+    /// The neighbourhood radius, in Delta.
     pub epsilon: f32,
+    /// c: the least neighbours of a core scan, itself included.
     pub min_points: usize,
+    /// Clusters found (noise not counted).
     pub clusters: usize,
     /// Scans in a cluster / all scans.
     pub inlier_ratio: f64,

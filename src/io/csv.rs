@@ -18,7 +18,9 @@ use std::borrow::Cow;
 /// One record and the line of the text it starts on (1-based), for errors.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Record {
+    /// The line the record starts on, 1-based.
     pub line: usize,
+    /// Its cells, unquoted.
     pub cells: Vec<String>,
 }
 

@@ -114,11 +114,15 @@ impl ReadLimits {
 /// The kinds of point-cloud file placecat reads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FileKind {
+    /// PLY (the first line is `ply`).
     Ply,
+    /// PCD v0.7 (a PCD header: comments, `VERSION`, `FIELDS` ...).
     Pcd,
+    /// KITTI `.bin` (no header: known by the file name only).
     KittiBin,
     /// LAS or LAZ (the header says which).
     Las,
+    /// E57 (starts with `ASTM-E57`).
     E57,
 }
 

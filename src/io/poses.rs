@@ -10,8 +10,11 @@ use serde::{Deserialize, Serialize};
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "lowercase")]
 pub enum PoseFormat {
+    /// KITTI odometry: 12 numbers a row, a 3x4 [R|t] matrix row-major.
     Kitti,
+    /// TUM RGB-D: `t tx ty tz qx qy qz qw` a row.
     Tum,
+    /// `name,x,y[,z]` a row, with or without a header.
     Csv,
 }
 
@@ -23,7 +26,9 @@ pub struct Pose {
     pub name: Option<String>,
     /// Timestamp for TUM rows.
     pub time: Option<f64>,
+    /// Sensor position x, y, z (m) in the poses file's world frame.
     pub position: [f64; 3],
+    /// Heading about z (radians, counter-clockwise from +x).
     pub yaw: f64,
 }
 
@@ -31,7 +36,9 @@ pub struct Pose {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Poses {
+    /// The format recognised from the rows.
     pub format: PoseFormat,
+    /// One pose a row, in file order.
     pub poses: Vec<Pose>,
 }
 

@@ -3,15 +3,25 @@
 /// A numeric type of a PLY property or PCD field.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Scalar {
+    /// Signed 8-bit integer (PLY `char`/`int8`, PCD `I 1`).
     I8,
+    /// Unsigned 8-bit integer (PLY `uchar`/`uint8`, PCD `U 1`).
     U8,
+    /// Signed 16-bit integer.
     I16,
+    /// Unsigned 16-bit integer.
     U16,
+    /// Signed 32-bit integer.
     I32,
+    /// Unsigned 32-bit integer.
     U32,
+    /// Signed 64-bit integer (PCD only).
     I64,
+    /// Unsigned 64-bit integer (PCD only).
     U64,
+    /// IEEE 754 single (PLY `float`/`float32`, PCD `F 4`).
     F32,
+    /// IEEE 754 double (PLY `double`/`float64`, PCD `F 8`).
     F64,
 }
 

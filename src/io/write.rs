@@ -6,8 +6,11 @@ use crate::error::Result;
 /// PLY encodings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PlyEncoding {
+    /// `ascii`: one vertex a line.
     Ascii,
+    /// `binary_little_endian`: the compact form most tools write.
     BinaryLittleEndian,
+    /// `binary_big_endian`.
     BinaryBigEndian,
 }
 
@@ -58,8 +61,11 @@ pub fn ply(points: &[[f32; 3]], encoding: PlyEncoding, double: bool) -> Vec<u8> 
 /// PCD DATA kinds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PcdData {
+    /// `DATA ascii`: one point a line.
     Ascii,
+    /// `DATA binary`: packed records.
     Binary,
+    /// `DATA binary_compressed`: LZF over the columns.
     BinaryCompressed,
 }
 

@@ -4,29 +4,48 @@
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Shape {
     /// Axis-aligned box, min and max corners.
-    Cuboid { min: [f64; 3], max: [f64; 3] },
+    Cuboid {
+        /// Lowest x, y, z (m).
+        min: [f64; 3],
+        /// Highest x, y, z (m).
+        max: [f64; 3],
+    },
     /// Box turned by `yaw` about the vertical through `centre` (chairs and
     /// furniture are rarely square to the walls). `half`: half sizes.
     OrientedBox {
+        /// Centre (m).
         centre: [f64; 3],
+        /// Half sizes along the box's own axes (m).
         half: [f64; 3],
+        /// Turn about the vertical (radians, counter-clockwise).
         yaw: f64,
     },
     /// Vertical cylinder (tree trunks, pillars).
     Cylinder {
+        /// Axis position x, y (m).
         centre: [f64; 2],
+        /// Radius (m).
         radius: f64,
+        /// Bottom height (m).
         z0: f64,
+        /// Top height (m).
         z1: f64,
     },
     /// Sphere (tree crowns, bushes).
-    Sphere { centre: [f64; 3], radius: f64 },
+    Sphere {
+        /// Centre (m).
+        centre: [f64; 3],
+        /// Radius (m).
+        radius: f64,
+    },
 }
 
 /// A ray: origin and unit direction.
 #[derive(Debug, Clone, Copy)]
 pub struct Ray {
+    /// Origin (m).
     pub o: [f64; 3],
+    /// Unit direction.
     pub d: [f64; 3],
 }
 

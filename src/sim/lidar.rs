@@ -12,12 +12,15 @@ use serde::{Deserialize, Serialize};
 pub struct LidarParams {
     /// Number of beams (rows).
     pub beams: usize,
-    /// Vertical field of view, lowest and highest beam angle (degrees).
+    /// Lowest beam angle (degrees; negative below the horizon).
     pub fov_down: f64,
+    /// Highest beam angle (degrees; positive above the horizon).
     pub fov_up: f64,
     /// Firings per revolution (columns).
     pub azimuth_steps: usize,
+    /// Returns closer than this are lost (m): the sensor's blind zone.
     pub min_range: f64,
+    /// Returns farther than this are lost (m).
     pub max_range: f64,
     /// Standard deviation of Gaussian range noise (m).
     pub range_noise: f64,

@@ -32,8 +32,11 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SceneKind {
+    /// Rooms of the five KyushuIndoor kinds, scanned from free spots.
     Indoor,
+    /// An AGV's route through a small hall, an airlock and a racked large hall.
     Warehouse,
+    /// A vehicle's loops over a field, a forest road and a forest path.
     Outdoor,
 }
 
@@ -54,7 +57,10 @@ impl std::str::FromStr for SceneKind {
 /// What to simulate.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SimParams {
+    /// Which scene to build.
     pub scene: SceneKind,
+    /// Seed of every random choice (sizes, furniture, route, noise): the same
+    /// seed gives the same scans.
     pub seed: u64,
     /// Indoor: scans per kind. Warehouse, outdoor: scans along the trajectory.
     pub scans: usize,
@@ -97,6 +103,8 @@ impl std::str::FromStr for Buildings {
 }
 
 impl SimParams {
+    /// The defaults for `scene`: 40 scans per kind indoors (5 per room), 300
+    /// along the routes, the scene's own sensor, rooms of one building.
     pub fn new(scene: SceneKind, seed: u64) -> Self {
         SimParams {
             scene,
@@ -120,6 +128,8 @@ impl SimParams {
         }
     }
 
+    /// The sensor to use: the one given, else the scene's default (the outdoor
+    /// sensor outdoors, the indoor one elsewhere).
     pub fn lidar(&self) -> LidarParams {
         self.lidar.clone().unwrap_or_else(|| match self.scene {
             SceneKind::Outdoor => LidarParams::outdoor(),
@@ -127,6 +137,8 @@ impl SimParams {
         })
     }
 
+    /// Reject 0 or more than 100,000 scans, 0 scans per room, and an invalid
+    /// sensor.
     pub fn validate(&self) -> Result<()> {
         if self.scans == 0 || self.scans > 100_000 {
             return invalid(format!("scans must be in 1..=100000, got {}", self.scans));
@@ -141,13 +153,17 @@ impl SimParams {
 /// One simulated scan: points in the sensor frame, its pose and label.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SimScan {
+    /// File name, `scan_NNNNN.ply`, numbered in order.
     pub name: String,
+    /// The true kind of place (an indoor kind, a site's stretch).
     pub label: String,
     /// Position of the sensor and its heading (what poses files hold).
     pub pose: Pose,
-    /// The sensor's tilt with the vehicle (radians; 0 indoors).
+    /// The sensor's nose-down tilt with the vehicle (radians; 0 indoors).
     pub pitch: f64,
+    /// Left-side-up tilt (radians; 0 indoors).
     pub roll: f64,
+    /// The returns in the sensor frame (m), ray by ray.
     pub points: Vec<[f32; 3]>,
 }
 
@@ -175,6 +191,8 @@ pub struct Simulation {
 }
 
 impl Simulation {
+    /// Plan the scans of `params` (checked first): build the rooms or the site
+    /// and the sensor pose of every scan. Nothing is ray-cast yet.
     pub fn new(params: &SimParams) -> Result<Simulation> {
         params.validate()?;
         let mut r = crate::rng::rng(params.seed);
@@ -245,10 +263,12 @@ impl Simulation {
         })
     }
 
+    /// Number of scans planned.
     pub fn len(&self) -> usize {
         self.shots.len()
     }
 
+    /// True when no scan is planned.
     pub fn is_empty(&self) -> bool {
         self.shots.is_empty()
     }

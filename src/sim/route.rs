@@ -5,6 +5,7 @@
 /// The route as a dense polyline (one point per [`STEP`] metres or less).
 #[derive(Debug, Clone)]
 pub struct Route {
+    /// The polyline's points in the site frame (x, y in m).
     pub points: Vec<[f64; 2]>,
     /// Kind of place of the stretch from point i to i + 1.
     pub kinds: Vec<&'static str>,
@@ -17,8 +18,11 @@ pub const STEP: f64 = 0.5;
 /// One place along the route where a scan is taken.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stop {
+    /// Where the vehicle stands (x, y in m).
     pub position: [f64; 2],
+    /// Its heading along the route (radians, counter-clockwise from +x).
     pub heading: f64,
+    /// The kind of place of the stretch it stands on (its ground-truth label).
     pub kind: &'static str,
 }
 
@@ -86,6 +90,7 @@ impl Route {
         }
     }
 
+    /// Length of the route (m).
     pub fn length(&self) -> f64 {
         self.points.windows(2).map(|w| dist(w[0], w[1])).sum()
     }

@@ -114,8 +114,11 @@ fn bookcase(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, f: &Frame, x0: f64, len: f
 /// stand on the floor (the sensor keeps clear of them); the rest are
 /// overhead services and the shell.
 pub struct Room {
+    /// Everything the sensor can hit: furniture first, then the shell.
     pub shapes: Vec<Shape>,
+    /// Interior length and width (m); the floor spans [0, size] in x and y.
     pub size: [f64; 2],
+    /// How many of `shapes` are furniture standing on the floor.
     pub furniture: usize,
 }
 

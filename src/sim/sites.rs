@@ -23,15 +23,21 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 /// A site: what the sensor can hit, the ground (None: a flat floor at z = 0
 /// made of shapes), the route and the vehicle driving it.
 pub struct Site {
+    /// Everything the sensor can hit besides the ground.
     pub shapes: Vec<Shape>,
+    /// The uneven ground outdoors; None where the floor is one of `shapes`.
     pub ground: Option<Terrain>,
+    /// The vehicle's route, labelled with the kind of place of each stretch.
     pub route: Route,
+    /// The vehicle: how its sensor sits above the ground.
     pub chassis: Chassis,
     /// Relative driving speed on a kind of place.
     pub speed: fn(&str) -> f64,
 }
 
+/// The kinds of place of the outdoor site, its ground-truth labels.
 pub const OUTDOOR_KINDS: [&str; 3] = ["open_plain", "forest_road", "forest_path"];
+/// The kinds of place of the warehouse site, its ground-truth labels.
 pub const WAREHOUSE_KINDS: [&str; 3] = ["small_hall", "airlock", "large_hall"];
 
 /// Forest is generated this far from the route (m); beyond it the trees

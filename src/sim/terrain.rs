@@ -13,7 +13,9 @@ use super::geometry::Ray;
 pub struct Wave {
     /// Wave vector (rad/m); its length is 2 pi / wavelength.
     pub k: [f64; 2],
+    /// Height of a crest above the mean (m).
     pub amplitude: f64,
+    /// Phase at the origin (radians).
     pub phase: f64,
 }
 
@@ -33,15 +35,19 @@ impl Wave {
 /// Ground height z = base + slope . (x, y) + sum of waves.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Terrain {
+    /// Height at the origin of the site (m), before slope and waves.
     pub base: f64,
     /// Overall gradient (dz/dx, dz/dy).
     pub slope: [f64; 2],
+    /// The swells and bumps added to the plane.
     pub waves: Vec<Wave>,
     /// Bound on |grad h|, for stepping rays safely.
     max_slope: f64,
 }
 
 impl Terrain {
+    /// Ground of the given plane and waves; the bound on its slope, which
+    /// [`Terrain::hit`] steps by, is computed here once.
     pub fn new(base: f64, slope: [f64; 2], waves: Vec<Wave>) -> Terrain {
         let max_slope = slope[0].hypot(slope[1])
             + waves
@@ -56,10 +62,12 @@ impl Terrain {
         }
     }
 
+    /// Level ground at height `base` (m): indoor floors and the warehouse.
     pub fn flat(base: f64) -> Terrain {
         Terrain::new(base, [0.0, 0.0], vec![])
     }
 
+    /// Ground height z (m) under the point (x, y) of the site frame.
     pub fn height(&self, x: f64, y: f64) -> f64 {
         self.base
             + self.slope[0] * x
@@ -79,6 +87,8 @@ impl Terrain {
         })
     }
 
+    /// An upper bound on |grad h| anywhere (the plane's slope plus each wave's
+    /// amplitude times its wavenumber).
     pub fn max_slope(&self) -> f64 {
         self.max_slope
     }
@@ -150,9 +160,13 @@ const MAX_STEPS: usize = 400;
 /// points the nose down, positive roll lifts the left side).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SensorPose {
+    /// Optical centre in the site frame (m, z up).
     pub position: [f64; 3],
+    /// Heading about z (radians, counter-clockwise from +x).
     pub yaw: f64,
+    /// Nose-down tilt (radians).
     pub pitch: f64,
+    /// Left-side-up tilt (radians).
     pub roll: f64,
 }
 
@@ -185,7 +199,9 @@ impl SensorPose {
 /// shorter than the wheelbase tilt it less.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Chassis {
+    /// Distance between front and rear axles (m).
     pub wheelbase: f64,
+    /// Distance between left and right wheels (m).
     pub track: f64,
     /// Sensor height above the ground plane, along the vehicle's up axis.
     pub height: f64,

@@ -63,6 +63,7 @@ impl Model {
         })
     }
     #[wasm_bindgen(js_name = toJson)]
+    /// The model as JSON (`placecat-model/1`), as the CLI's `model` writes it.
     pub fn to_json(&self) -> WasmResult<String> {
         Ok(self.model.to_json()?)
     }

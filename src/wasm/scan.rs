@@ -50,10 +50,12 @@ pub struct DescribedScan {
 
 #[wasm_bindgen]
 impl DescribedScan {
+    /// The name the scan was described under (its file name).
     #[wasm_bindgen(getter)]
     pub fn name(&self) -> String {
         self.name.clone()
     }
+    /// Format name, e.g. `ply_binary_little_endian`.
     #[wasm_bindgen(getter)]
     pub fn format(&self) -> String {
         self.format.to_string()

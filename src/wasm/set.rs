@@ -33,6 +33,7 @@ impl DescriptorSet {
         Ok(self.set.push(scan.name.clone(), scan.descriptor.clone())?)
     }
     #[wasm_bindgen(getter)]
+    /// Number of scans in the set.
     pub fn length(&self) -> usize {
         self.set.len()
     }

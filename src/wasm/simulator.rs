@@ -34,6 +34,7 @@ impl Simulator {
         })
     }
     #[wasm_bindgen(getter)]
+    /// Number of scans the simulation will make.
     pub fn length(&self) -> usize {
         self.sim.len()
     }

@@ -1,11 +1,11 @@
 // The regression corpus of damaged scans (tests/data/bad), shared by
-// tests/bad_files.rs (native) and tests/wasm_api (wasm32), kept out of
+// tests/it/bad_files.rs (native) and tests/wasm_api (wasm32), kept out of
 // tests/ itself so cargo does not build it as a test of its own. Included
 // with `include!`: the same bytes must give the same message on both
 // targets (a header count cast with `as usize` once made them differ).
 
 /// Every file of the corpus, embedded (wasm tests cannot read a folder).
-/// tests/bad_files.rs checks that this list is the folder's.
+/// tests/it/bad_files.rs checks that this list is the folder's.
 pub const BAD_FILES: [(&str, &[u8]); 17] = [
     ("ok_pcd_ascii_crlf.pcd", include_bytes!("../data/bad/ok_pcd_ascii_crlf.pcd")),
     ("ok_pcd_zero_padding.pcd", include_bytes!("../data/bad/ok_pcd_zero_padding.pcd")),

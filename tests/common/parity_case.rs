@@ -1,4 +1,4 @@
-// Shared by tests/parity.rs (native) and tests/wasm_api (wasm), kept out of
+// Shared by tests/it/parity.rs (native) and tests/wasm_api (wasm), kept out of
 // tests/ itself so cargo does not build it as a test of its own: the same
 // inputs and seeds must give the same labels on both. Included with
 // `include!`, so it has no module of its own.

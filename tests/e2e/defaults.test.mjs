@@ -1,6 +1,8 @@
-// First contact (issue 14): the preset suggested from the data, the
-// dendrogram's height axis, 1 and 2 scans, the map of the outdoor demo's
-// site, and poses that do not outlive their data set (issue 16).
+// First contact (issue 14): the outdoor demo (the rule's number of
+// categories, accuracy against its truth, a site on the map), ten scans of
+// one place as one category, the warehouse demo, the preset suggested from
+// the data, the dendrogram's height axis, 1 and 2 scans, and poses that do
+// not outlive their data set (issue 16).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
@@ -16,27 +18,64 @@ const text = (sel) => h.page.textContent(sel);
 const categories = () => h.page.$eval('#cluster-status', (e) => Number(e.dataset.categories));
 const load = (files) => afterRun(h.page, () => h.page.setInputFiles('#files', files.map((f) => (f.startsWith('/') ? f : join(REAL, f)))));
 
-/** Pixels of the map in the site's grey (rgb 70, 78, 92 at low alpha): the scans' points, not the path. */
-const sitePixels = () => h.page.evaluate(() => {
+/**
+ * Pixels of the map in the site's grey (rgb 70, 78, 92 at low alpha): the
+ * scans' points, not the path; and the box around them (canvas pixels).
+ */
+const siteOnMap = () => h.page.evaluate(() => {
   const c = /** @type {HTMLCanvasElement} */ (document.getElementById('map'));
   const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-  let n = 0;
-  for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 0 && Math.abs(d[i] - 70) <= 12 && Math.abs(d[i + 1] - 78) <= 12 && Math.abs(d[i + 2] - 92) <= 12) n++;
-  return n;
+  let pixels = 0, x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (let i = 0; i < d.length; i += 4) {
+    if (!(d[i + 3] > 0 && Math.abs(d[i] - 70) <= 12 && Math.abs(d[i + 1] - 78) <= 12 && Math.abs(d[i + 2] - 92) <= 12)) continue;
+    pixels++;
+    const x = (i / 4) % c.width, y = Math.floor(i / 4 / c.width);
+    [x0, x1, y0, y1] = [Math.min(x0, x), Math.max(x1, x), Math.min(y0, y), Math.max(y1, y)];
+  }
+  return { pixels, width: x1 - x0 + 1, height: y1 - y0 + 1 };
 });
 
-test('the outdoor demo: outdoor suggested, a site under the trajectory, a readable dendrogram whose axis switches', async () => {
+/** The page's evaluation against the demo's truth, as numbers. */
+const evaluation = async () => {
+  const t = await text('#accuracy');
+  const m = t.match(/^Against ground truth: accuracy (\d+\.\d) %, ARI (-?\d\.\d{3})/);
+  assert.ok(m, t);
+  return { accuracy: Number(m[1]) / 100, ari: Number(m[2]) };
+};
+
+test('the outdoor demo, no click but its button: a site of 300 scans, the categories the rule chose, accuracy against its truth', async () => {
   await afterRun(h.page, () => h.page.click('#demo-outdoor'), 300000);
+  assert.match(await text('#progress-text'), /^300 \/ 300 scans/);
   assert.match(await text('#preset-note'), /^outdoor suggested: \d+ % of the points of scan_00000\.ply lie beyond 15 m/);
   assert.equal(await h.page.inputValue('#preset'), 'outdoor');
-  const site = await sitePixels();
-  assert.ok(site > 5000, `${site} site pixels on the map`);
+  // The automatic cut (issue 14: the three kinds, or plain vs forest): the
+  // rule (silhouette_gap) chooses 3 on the demo (simulator seed 1,
+  // hierarchical k-means++ seed 0), and the page says it was the rule's.
+  assert.equal(await categories(), 3);
+  assert.match(await text('#cut-note'), /^3 categories: the gap statistic's choice \(best mean silhouette 0\.\d\d\)$/);
+  assert.match(await text('#cluster-status'), /^3 categories from 300 scans$/);
+  assert.equal(await h.page.$$eval('#legend li', (li) => li.length), 3);
+  // Accuracy at these three categories. Issue 14 asks for at least 97 %;
+  // NOT met: the page shows 91.3 % (ARI 0.775), as docs/experiments.md
+  // section 4 measures natively on seed 1 (91.2 +- 0.2 % over 10 tree
+  // seeds; test seeds 101-105: 89-92 %): forest road and forest path mix
+  // (0.15 and 0.11 of their scans), the plain is clean. These floors catch
+  // a regression, not the target.
+  const ev = await evaluation();
+  assert.ok(ev.accuracy >= 0.9, `accuracy ${ev.accuracy} at 3 categories`);
+  assert.ok(ev.ari >= 0.75, `ARI ${ev.ari}`);
+  // The map is a site, not a line: the scans' points spread both ways (the
+  // old strip's would be about 60 m across 350 m: a ratio near 0.17).
+  const site = await siteOnMap();
+  assert.ok(site.pixels > 5000, `${site.pixels} site pixels on the map`);
+  assert.ok(Math.min(site.width, site.height) / Math.max(site.width, site.height) > 0.4, `site ${site.width} x ${site.height} px`);
   assert.match(await text('#map-caption'), /^Trajectory map/);
-  assert.match(await text('#cut-note'), /^\d+ categor(y|ies): /);
   await h.page.screenshot({ path: join(ARTIFACTS, 'demo-outdoor.png') });
   // The README's picture of the page: PLACECAT_README_SHOT=1 refreshes it
-  // (e.g. after the demo scene changes); the test never writes docs/ otherwise.
-  if (process.env.PLACECAT_README_SHOT === '1') await h.page.screenshot({ path: join(ROOT, 'docs', 'page-outdoor-demo.jpg'), type: 'jpeg', quality: 80 });
+  // (e.g. after the demo scene changes); the test never writes docs/
+  // otherwise. The whole page: the accuracy and the legend of the
+  // categories lie below the first screen.
+  if (process.env.PLACECAT_README_SHOT === '1') await h.page.screenshot({ path: join(ROOT, 'docs', 'page-outdoor-demo.jpg'), type: 'jpeg', quality: 80, fullPage: true });
   // Each scale draws another axis; dragging the line still cuts in each.
   const ticks = () => h.page.$eval('#dendrogram', (c) => c.dataset.ticks);
   const seen = new Set();
@@ -51,6 +90,34 @@ test('the outdoor demo: outdoor suggested, a site under the trajectory, a readab
   }
   assert.equal(seen.size, 3, `three axes: ${[...seen].join(' | ')}`);
   await h.page.screenshot({ path: join(ARTIFACTS, 'demo-outdoor-log.png') });
+});
+
+test('ten scans of one place are one category, not five', async () => {
+  const ouster = Array.from({ length: 10 }, (_, i) => `ouster_os0_sequence/scan_00${i}.bin`);
+  await load(ouster);
+  assert.match(await text('#progress-text'), /^10 \/ 10 scans/);
+  assert.equal(await categories(), 1);
+  assert.match(await text('#cluster-status'), /^1 category from 10 scans$/);
+  // The rule's reason: no K from 2 on reaches a mean silhouette of 0.5.
+  assert.match(await text('#cut-note'), /^1 category: the scans look like one place \(best mean silhouette 0\.[0-4]\d, under 0\.5\)$/);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'one-place.png') });
+});
+
+test('the warehouse demo: 300 scans of an AGV route, described with the indoor preset, drawn as a site', async () => {
+  await afterRun(h.page, () => h.page.click('#demo-warehouse'), 300000);
+  assert.match(await text('#progress-text'), /^300 \/ 300 scans/);
+  // There is no warehouse preset: the select holds indoor, as the paper's ArlaWarehouse.
+  assert.equal(await h.page.inputValue('#preset'), 'indoor');
+  assert.match(await text('#preset-note'), /^indoor suggested: \d+ % of the points of scan_00000\.ply lie beyond 15 m \(under 14 %/);
+  assert.match(await text('#map-caption'), /^Trajectory map/);
+  assert.ok((await siteOnMap()).pixels > 5000, 'the halls drawn');
+  // Measured: the rule says one place here (best mean silhouette 0.35 on
+  // seed 1): the halls' descriptors overlap; at 3 categories the tree
+  // reaches 50.7 % (docs/experiments.md section 4: 59-72 % with k-means
+  // on the test seeds). A change in either shows here.
+  assert.equal(await categories(), 1);
+  assert.match(await text('#cut-note'), /^1 category: the scans look like one place/);
+  await h.page.screenshot({ path: join(ARTIFACTS, 'demo-warehouse.png') });
 });
 
 test('one scan is one category, said so; nothing breaks', async () => {
@@ -83,7 +150,7 @@ test('an enclosed space is indoor, KITTI outdoor; poses go with their data set',
   await load(kitti);
   assert.match(await text('#preset-note'), /^outdoor suggested/);
   assert.match(await text('#map-caption'), /^Trajectory map/);
-  assert.ok((await sitePixels()) > 500, 'KITTI scans drawn by their poses');
+  assert.ok((await siteOnMap()).pixels > 500, 'KITTI scans drawn by their poses');
   // The same poses as TUM rows (t x y z qx qy qz qw, a rotation about z by
   // the KITTI rows' yaw) draw the same map.
   const mapImage = () => h.page.$eval('#map', (c) => c.toDataURL());

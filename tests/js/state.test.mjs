@@ -145,6 +145,21 @@ test('a run: results cleared, names and a counter set; the demo forgets poses an
   assert.equal(S.errorText({ name: 'a.ply', message: 'the worker failed' }), 'a.ply: the worker failed');
 });
 
+test('the outdoor and warehouse demos: 300 scans along a route, drawn by their poses, described with a preset that exists', () => {
+  for (const scene of /** @type {const} */ (['outdoor', 'warehouse'])) {
+    const { datasetId, inputs } = S.demoInputs(scene);
+    assert.equal(datasetId, `demo-${scene}-1-300`);
+    assert.equal(inputs.length, 300);
+    assert.deepEqual(inputs[299].sim, { scene, seed: 1, scans: 300, index: 299 });
+    const r = S.beginRun(S.initialState(), { datasetId, demo: scene, inputs, anchors: {}, params: /** @type {any} */ ({}) });
+    const shown = S.finishRun(r, [scan('scan_00000.ply', { pose: { position: [0, 0, 0], yaw: 0 } })]);
+    assert.equal(S.posesOf(shown).usePoses, true, `${scene}: a map of the site`);
+  }
+  assert.equal(S.posesOf(S.finishRun(S.beginRun(S.initialState(), { ...S.demoInputs('indoor'), demo: 'indoor', anchors: {}, params: /** @type {any} */ ({}) }), [scan('scan_00000.ply')])).usePoses, false, 'indoor: separate rooms');
+  // The warehouse has no preset of its own: indoor, as for the paper's ArlaWarehouse.
+  assert.deepEqual(S.DEMO_PRESET, { indoor: 'indoor', warehouse: 'indoor', outdoor: 'outdoor' });
+});
+
 test('the dendrogram gets, per cut node, its category and central preview', () => {
   const nodes = [
     { id: 0, height: 1, children: [1, 2], members: [0, 1, 2, 3] },

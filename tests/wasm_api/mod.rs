@@ -222,7 +222,7 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
 }
 
 /// The corpus of damaged scans gives, in wasm32, exactly the messages the
-/// native test (tests/bad_files.rs) checks: strict through the JS API's
+/// native test (tests/it/bad_files.rs) checks: strict through the JS API's
 /// readScan (a JS Error), lenient through the core compiled to wasm32.
 #[wasm_bindgen_test]
 fn damaged_files_give_the_native_messages() {

@@ -1,6 +1,8 @@
 //! `placecat`: the command-line tool (native only).
 //!
-//! Forms (other tooling scripts against these; add, never rename):
+//! Forms (other tooling scripts against these; add, never rename). Folders
+//! are walked recursively; scans are named by their path relative to the
+//! inputs' common folder; `-o -` writes to standard output.
 //! - `placecat info FILE --json`
 //! - `placecat describe [--preset P] [--params FILE.json] INPUT... -o OUT.json`
 //! - `placecat describe BAG... [--topic T] [--every N | --every-metres D] [--pose-topic T | --tf-frame F | --no-poses] [--poses-out POSES.csv] -o OUT.json`
@@ -9,10 +11,12 @@
 //! - `placecat cluster DESCRIPTORS.json --method kmeans --k K --seeding random|stride|plusplus --seed S -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method hkmeans (--threshold T | --categories K) --seed S -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method dbscan --eps E --min-points C -o OUT.json`
+//! - `placecat cluster ... --format csv -o OUT.csv` (`file,category` rows; also for any `*.csv` output)
 //! - `placecat evaluate OUT.json --truth labels.csv`
 //! - `placecat sweep DESCRIPTORS.json [--truth labels.csv] [--eps E,...] [--min-points C,...] [-o OUT.csv]`
 //! - `placecat model DESCRIPTORS.json --names NAMES.csv -o MODEL.json`
 //! - `placecat classify MODEL.json INPUT... [-o OUT.csv]`
+//! - `placecat map OUT.json --poses POSES [--scans ROOT] -o map.svg`
 //! - `placecat simulate --scene indoor|warehouse|outdoor --seed S [--scans N] [--buildings one|many] -o DIR`
 
 #[cfg(not(target_arch = "wasm32"))]

@@ -78,15 +78,25 @@ use serde::{Deserialize, Serialize};
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 #[serde(rename_all = "snake_case")]
 pub enum Rule {
+    /// The K with the largest mean silhouette; 1 below [`NO_STRUCTURE_SILHOUETTE`].
     Silhouette,
+    /// The gap statistic's 1-SE rule from K = 1 on.
     Gap,
+    /// 1 if the gap statistic says so, else the K >= 2 of largest silhouette.
     GapSilhouette,
+    /// 1 if the gap statistic says so, else the K >= 2 at the largest relative
+    /// drop of the tree's node heights (trees only).
     HeightGap,
+    /// 1 if the gap statistic says so, else the K >= 2 of largest
+    /// Calinski-Harabasz index (distance form).
     CalinskiHarabasz,
+    /// The default: 1 unless the silhouette reaches [`REASONABLE_SILHOUETTE`] at
+    /// some K >= 2, else the gap statistic's 1-SE rule from K = 2 on.
     SilhouetteGap,
 }
 
 impl Rule {
+    /// Every rule, in the order reports list them.
     pub const ALL: [Rule; 6] = [
         Rule::Silhouette,
         Rule::Gap,
@@ -96,6 +106,7 @@ impl Rule {
         Rule::SilhouetteGap,
     ];
 
+    /// The rule's name as written in JSON, on the command line and in reports.
     pub fn name(self) -> &'static str {
         match self {
             Rule::Silhouette => "silhouette",
@@ -123,7 +134,9 @@ pub const NO_STRUCTURE_SILHOUETTE: f64 = 0.25;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Choice {
+    /// The number of categories chosen (1 = no structure found).
     pub k: usize,
+    /// The rule that chose it.
     pub rule: Rule,
     /// (K, score) for each K the score is defined at (larger is better;
     /// for `gap`, Gap(K)).
@@ -175,15 +188,19 @@ pub enum Clusterer<'a> {
 /// Every rule's scores for K = 1..=k_max (vectors indexed by K - 1).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Scores {
+    /// Number of scans.
     pub n: usize,
     /// The categories at each K.
     pub labels: Vec<Vec<i32>>,
+    /// Mean silhouette on Delta (None at K = 1, where it is undefined).
     pub silhouette: Vec<Option<f64>>,
     /// log(W_K / n) of the data.
     pub log_w: Vec<f64>,
+    /// Gap(K) = E*[log W*_K] - log W_K against the permutation reference.
     pub gap: Vec<f64>,
     /// s_K of the gap statistic.
     pub gap_s: Vec<f64>,
+    /// Calinski-Harabasz index in its distance form (None at K = 1 and K = n).
     pub calinski: Vec<Option<f64>>,
     /// h_{K-1} / h_K (trees only; NaN at K = 1 and where undefined).
     pub height_ratio: Option<Vec<f64>>,

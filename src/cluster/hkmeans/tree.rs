@@ -9,9 +9,14 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct TreeNode {
+    /// Indices of the scans under this node.
     pub members: Vec<usize>,
+    /// Diameter: the largest Delta between two members (0 for a leaf of one
+    /// scan; an upper bound on large nodes built without a matrix).
     pub height: f32,
+    /// Indices of the two children in [`Tree::nodes`]; empty for a leaf.
     pub children: Vec<usize>,
+    /// Index of the parent in [`Tree::nodes`]; None for the root.
     pub parent: Option<usize>,
 }
 
@@ -49,6 +54,8 @@ impl TryFrom<TreeData> for Tree {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct Cut {
+    /// The height the tree was cut at: each category is a node at most this
+    /// high whose parent is higher.
     pub threshold: f32,
     /// Category of each scan (0.., in order of the tree's left-to-right leaves).
     pub labels: Vec<i32>,

@@ -10,10 +10,13 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct KMeansResult {
+    /// Category of each scan, 0..k.
     pub labels: Vec<i32>,
     /// Scans the centres started at.
     pub seeds: Vec<usize>,
+    /// Assign/update rounds run.
     pub iterations: usize,
+    /// True if no label changed in the last round (false: stopped at the cap).
     pub converged: bool,
     /// Sum over scans of Delta to their centre.
     pub cost: f64,

@@ -52,6 +52,7 @@ use source::Window;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct TopicInfo {
+    /// The topic name, e.g. `/os_cloud_node/points`.
     pub name: String,
     /// The message type as the bag writes it (`sensor_msgs/PointCloud2`,
     /// `sensor_msgs/msg/PointCloud2`).
@@ -92,6 +93,7 @@ pub struct BagOptions {
     /// Keep one cloud every this many metres along the path (needs poses;
     /// a cloud without a pose is kept).
     pub every_metres: Option<f64>,
+    /// Where each cloud's pose comes from (odometry, tf, or none).
     pub pose: PoseSource,
     /// `max_points` caps each cloud; `max_bytes` each chunk (not the bag).
     pub limits: ReadLimits,

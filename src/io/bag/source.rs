@@ -44,6 +44,7 @@ pub struct FileSource {
 
 #[cfg(not(target_arch = "wasm32"))]
 impl FileSource {
+    /// Open the file at `path` for reading by byte ranges.
     pub fn open(path: &std::path::Path) -> Result<FileSource> {
         let file = std::fs::File::open(path)?;
         let size = file.metadata()?.len();

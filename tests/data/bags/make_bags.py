@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write the ROS bag fixtures of tests/bags.rs with tools independent of
+"""Write the ROS bag fixtures of tests/it/bags.rs with tools independent of
 placecat: the `rosbags` package (ROS 1 bags, rosbag2 MCAP, and the ROS 1 / CDR
 serialisation) and `mcap-ros2-support` (rosbag2 MCAP with its own CDR
 encoder). Also writes expected.json: per bag, its topics and, per cloud, the

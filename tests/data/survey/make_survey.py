@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write the E57 and LAS/LAZ fixtures of tests/survey.rs with tools that are
+"""Write the E57 and LAS/LAZ fixtures of tests/it/survey.rs with tools that are
 not placecat (pye57 over libE57Format, laspy with lazrs), and the figures the
 tests check against in expected.json.
 

@@ -3,6 +3,7 @@
 //! `BAGNAME:TOPIC:INDEX`).
 
 use super::describe::{DescribedFile, DescriptorsFile, FileError};
+use super::names::Input;
 use super::progress;
 use placecat::descriptor::DescriptorParams;
 use placecat::io::bag::{topics_path, BagOptions, BagReader, PoseSource};
@@ -12,6 +13,20 @@ use placecat::io::ReadLimits;
 use placecat::Result;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
+
+/// A bag cloud's name with the bag's relative path in front: the reader
+/// names it `BAGNAME:TOPIC:INDEX` by the bag's base name.
+fn renamed(scan_name: &str, bag: &Input) -> String {
+    let base = bag
+        .path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    match scan_name.strip_prefix(base.as_str()) {
+        Some(rest) => format!("{}{rest}", bag.name),
+        None => scan_name.to_string(),
+    }
+}
 use std::process::ExitCode;
 
 /// How `describe` reads ROS bags (`.bag`, `.mcap`); no effect on other files.
@@ -97,14 +112,15 @@ pub fn topics(bag: &Path, json: bool) -> Result<ExitCode> {
 /// cannot be opened, a cloud or chunk that cannot be read, and a cloud
 /// without descriptor each go to `set.errors` and stderr.
 pub fn describe(
-    bags: &[PathBuf],
+    bags: &[Input],
     args: &BagArgs,
     limits: &ReadLimits,
     set: &mut DescriptorsFile,
 ) -> Result<()> {
     let opts = args.options(limits);
     let mut poses = Vec::new();
-    for bag in bags {
+    for input in bags {
+        let bag = input.path.as_path();
         let shown = bag.display().to_string();
         let mut reader = match BagReader::open_path(bag, opts.clone()) {
             Ok(r) => r,
@@ -139,6 +155,12 @@ pub fn describe(
             if batch.is_empty() {
                 break;
             }
+            for scan in &mut batch {
+                scan.name = renamed(&scan.name, input);
+                if let Some(p) = &mut scan.pose {
+                    p.name = Some(scan.name.clone());
+                }
+            }
             poses.extend(batch.iter().filter_map(|s| s.pose.clone()));
             let params: &DescriptorParams = &set.params;
             let described: Vec<_> = batch
@@ -171,7 +193,7 @@ pub fn describe(
     }
     if let Some(out) = &args.poses_out {
         super::write_out(Some(out), &poses_csv(&poses))?;
-        eprintln!("{} poses -> {}", poses.len(), out.display());
+        eprintln!("{} poses -> {}", poses.len(), super::shown(out));
     }
     Ok(())
 }

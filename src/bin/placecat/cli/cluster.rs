@@ -1,6 +1,7 @@
 //! `placecat cluster`, `placecat evaluate`, `placecat sweep`, `placecat simulate`.
 
 use super::describe::DescriptorsFile;
+use super::names::Labels;
 use super::progress;
 use placecat::cluster::choose_k::{ChooseKParams, Clusterer};
 use placecat::cluster::{
@@ -84,7 +85,43 @@ fn need<T>(v: Option<T>, flag: &str, method: &str) -> Result<T> {
     v.ok_or_else(|| Error::InvalidParameter(format!("--method {method} needs {flag}")))
 }
 
-pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<ExitCode> {
+/// The form of `placecat cluster`'s output.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// OUT.json: files, labels and the method's fields (the default).
+    Json,
+    /// `file,category` rows under that header: the scan's name and its
+    /// category number (-1: DBSCAN noise).
+    Csv,
+}
+
+impl Format {
+    /// The format asked for, else CSV for an output named `*.csv` (JSON
+    /// in a .csv file would be read as one odd cell), else JSON.
+    pub fn for_output(asked: Option<Format>, output: &Path) -> Format {
+        let csv_name = output
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+        asked.unwrap_or(if csv_name { Format::Csv } else { Format::Json })
+    }
+}
+
+/// `file,category` rows with their header, RFC 4180 quoted.
+fn categories_csv(files: &[String], labels: &[i32]) -> String {
+    let mut s = String::from("file,category\n");
+    for (f, l) in files.iter().zip(labels) {
+        s += &csv::record([f.as_str(), &l.to_string()]);
+        s.push('\n');
+    }
+    s
+}
+
+pub fn cluster(
+    descriptors: &Path,
+    a: &ClusterArgs,
+    output: &Path,
+    format: Option<Format>,
+) -> Result<ExitCode> {
     let mut set = DescriptorsFile::load(descriptors)?;
     if set.is_empty() {
         return Err(Error::InvalidParameter(format!(
@@ -176,11 +213,18 @@ pub fn cluster(descriptors: &Path, a: &ClusterArgs, output: &Path) -> Result<Exi
             )))
         }
     }
-    super::write_out(Some(output), &serde_json::to_string(&out)?)?;
+    let text = match Format::for_output(format, output) {
+        Format::Json => serde_json::to_string(&out)?,
+        Format::Csv => {
+            let labels: Vec<i32> = serde_json::from_value(out["labels"].take())?;
+            categories_csv(&files, &labels)
+        }
+    };
+    super::write_out(Some(output), &text)?;
     Ok(ExitCode::SUCCESS)
 }
 
-/// Read a `file,label` CSV (header optional) into (basename, label) pairs,
+/// Read a `file,label` CSV (header optional) into (file, label) pairs,
 /// with the core's CSV reader (RFC 4180: the page's export, spreadsheets).
 pub fn read_truth(path: &Path) -> Result<Vec<(String, String)>> {
     let name = path.display().to_string();
@@ -199,16 +243,19 @@ pub fn read_truth(path: &Path) -> Result<Vec<(String, String)>> {
             ))
             .in_file(&name));
         };
-        rows.push((basename(f.trim()), l.trim().to_string()));
+        rows.push((f.trim().to_string(), l.trim().to_string()));
     }
     Ok(rows)
 }
 
-fn basename(s: &str) -> String {
-    s.rsplit(['/', '\\']).next().unwrap_or(s).to_string()
+/// The labels of a `file,label` CSV for these scan names (see
+/// [`Labels`] for how rows match names).
+pub fn read_labels(path: &Path) -> Result<Labels> {
+    Labels::new(read_truth(path)?, path)
 }
 
-pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
+/// The files and labels of a `cluster` OUT.json, errors naming it.
+pub fn read_clusters(clusters: &Path) -> Result<(Vec<String>, Vec<i32>)> {
     let name = clusters.display().to_string();
     let text = std::fs::read_to_string(clusters).map_err(|e| Error::from(e).in_file(&name))?;
     let v: Value = serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
@@ -228,39 +275,47 @@ pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
                 .in_file(&name),
         );
     }
+    Ok((files, labels))
+}
+
+/// `placecat evaluate`: the clustering against `file,label` ground truth.
+pub fn evaluate(clusters: &Path, truth: &Path) -> Result<ExitCode> {
+    let (files, labels) = read_clusters(clusters)?;
     let t = truth_for(&files, truth)?;
     let ev = placecat::eval::evaluate(&t, &labels)?;
     super::write_out(None, &format!("{}\n", serde_json::to_string_pretty(&ev)?))?;
     Ok(ExitCode::SUCCESS)
 }
 
-/// The ground-truth label of each file (matched by base name) from a
-/// `file,label` CSV; an error naming the CSV if a file has none.
+/// The ground-truth label of each file from a `file,label` CSV, matched
+/// on the relative path, or on the base name where only one scan has it;
+/// an error naming the CSV if a file has none.
 fn truth_for(files: &[impl AsRef<str>], truth: &Path) -> Result<Vec<String>> {
-    let table: std::collections::HashMap<String, String> = read_truth(truth)?.into_iter().collect();
-    let mut t = Vec::with_capacity(files.len());
-    let mut missing = Vec::new();
-    for f in files {
-        match table.get(&basename(f.as_ref())) {
-            Some(l) => t.push(l.clone()),
-            None => missing.push(f.as_ref().to_string()),
-        }
-    }
-    if !missing.is_empty() {
+    let labels = read_labels(truth)?;
+    let found = labels.for_names(files);
+    let missing: Vec<&str> = files
+        .iter()
+        .zip(&found)
+        .filter(|(_, l)| l.is_none())
+        .map(|(f, _)| f.as_ref())
+        .collect();
+    if let Some(first) = missing.first() {
         return Err(Error::Mismatch(format!(
-            "{} files have no ground-truth label (first: {})",
+            "{} files have no ground-truth label (first: {first}; rows match a scan's \
+             path relative to the inputs' common root, or its base name where no other \
+             scan has it)",
             missing.len(),
-            missing[0]
         ))
         .in_file(truth.display().to_string()));
     }
-    Ok(t)
+    Ok(found.into_iter().flatten().map(str::to_string).collect())
 }
 
 /// Options of `placecat sweep`.
 #[derive(clap::Args)]
 pub struct SweepArgs {
-    /// `file,label` CSV: adds the ARI and S = ARI x inliers / all.
+    /// `file,label` CSV (matched to the scans as `evaluate --truth` is):
+    /// adds the ARI and S = ARI x inliers / all.
     #[arg(long)]
     pub truth: Option<std::path::PathBuf>,
     /// Epsilons, comma-separated (default: quantiles 0.5 % to 50 % of the
@@ -330,6 +385,11 @@ pub fn simulate(
     buildings: &str,
     dir: &Path,
 ) -> Result<ExitCode> {
+    if super::is_stdout(dir) {
+        return Err(Error::InvalidParameter(
+            "simulate writes a folder of files: -o needs a folder, not -".into(),
+        ));
+    }
     let kind: SceneKind = scene.parse()?;
     let mut p = SimParams::new(kind, seed);
     p.buildings = buildings.parse()?;

@@ -1,11 +1,12 @@
 //! `placecat describe` and `placecat distances`.
 
-use super::bag::{is_bag, BagArgs};
+use super::bag::BagArgs;
+use super::names::{expand, Input, EXTENSIONS};
 use super::progress;
 use placecat::collection::merge_params;
 use placecat::descriptor::DescriptorParams;
 use placecat::io::csv::quote;
-use placecat::io::{e57, is_scan_name, read_path_at, ReadLimits};
+use placecat::io::{e57, read_path_at, ReadLimits};
 use placecat::{Collection, Descriptor, Error, Result};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -60,25 +61,6 @@ impl DescriptorsFile {
     }
 }
 
-/// Expand folders into the scans inside them, sorted by name.
-pub fn expand(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
-    let mut files = Vec::new();
-    for input in inputs {
-        if input.is_dir() {
-            let mut inside: Vec<PathBuf> = std::fs::read_dir(input)
-                .map_err(|e| Error::from(e).in_file(input.display().to_string()))?
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| p.is_file() && is_scan_name(&p.to_string_lossy()))
-                .collect();
-            inside.sort();
-            files.extend(inside);
-        } else {
-            files.push(input.clone());
-        }
-    }
-    Ok(files)
-}
-
 /// The preset's parameters with the fields of the `--params` file over them.
 fn load_params(preset: &str, params: Option<&Path>) -> Result<DescriptorParams> {
     let Some(path) = params else {
@@ -100,11 +82,30 @@ pub fn run(
     bag_args: &BagArgs,
 ) -> Result<ExitCode> {
     let params = load_params(preset, params)?;
-    let (bags, scans): (Vec<PathBuf>, Vec<PathBuf>) = inputs
-        .iter()
-        .cloned()
-        .partition(|p| p.is_file() && is_bag(p));
-    let files = expand(&scans)?;
+    let (set, of) = describe_inputs(inputs, params, limits, bag_args, "describing")?;
+    let text = serde_json::to_string(&set)?;
+    super::write_out(Some(output), &text)?;
+    let shown = super::shown(output);
+    eprintln!("described {} of {of} -> {shown}", set.files.len());
+    Ok(if set.files.is_empty() {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// Describe every scan of the inputs (files, folders walked recursively,
+/// bags) with `params`, each named by its path relative to the inputs'
+/// common root; also "N files" or "M scans from N files" for messages.
+pub fn describe_inputs(
+    inputs: &[PathBuf],
+    params: DescriptorParams,
+    limits: &ReadOptions,
+    bag_args: &BagArgs,
+    what: &'static str,
+) -> Result<(DescriptorsFile, String)> {
+    let (bags, files): (Vec<Input>, Vec<Input>) =
+        expand(inputs)?.into_iter().partition(Input::is_bag);
     let mut set = DescriptorsFile {
         files: Vec::new(),
         errors: Vec::new(),
@@ -112,7 +113,7 @@ pub fn run(
     };
     // Bags alone are fine; only files-and-folders inputs need a scan inside.
     if !files.is_empty() || bags.is_empty() {
-        for r in describe_files(&files, &set.params, limits, "describing")? {
+        for r in describe_files(&files, &set.params, limits, what)? {
             match r {
                 Ok(f) => set.files.push(f),
                 Err(e) => set.errors.push(e),
@@ -120,8 +121,6 @@ pub fn run(
         }
     }
     super::bag::describe(&bags, bag_args, &limits.limits, &mut set)?;
-    let text = serde_json::to_string(&set)?;
-    super::write_out(Some(output), &text)?;
     let scans = set.files.len() + set.errors.len();
     let inputs = files.len() + bags.len();
     let of = if scans == inputs {
@@ -130,38 +129,29 @@ pub fn run(
         // E57 surveys give a scan per station, bags a scan per cloud.
         format!("{scans} scans from {inputs} files")
     };
-    eprintln!(
-        "described {} of {of} -> {}",
-        set.files.len(),
-        output.display()
-    );
-    Ok(if set.files.is_empty() {
-        ExitCode::FAILURE
-    } else {
-        ExitCode::SUCCESS
-    })
+    Ok((set, of))
 }
 
 /// Read and describe files in parallel (each worker holds one file's
 /// points at a time; an E57 survey gives one scan after another), with a
 /// progress bar; a file or scan that fails is reported on stderr and comes
 /// back as its error, in input order.
-pub fn describe_files(
-    files: &[PathBuf],
+fn describe_files(
+    files: &[Input],
     params: &DescriptorParams,
     opts: &ReadOptions,
     what: &'static str,
 ) -> Result<Vec<std::result::Result<DescribedFile, FileError>>> {
     if files.is_empty() {
-        return Err(Error::InvalidParameter(
-            "no scan files in the inputs".into(),
-        ));
+        return Err(Error::InvalidParameter(format!(
+            "no scan files in the inputs (folders are searched with their subfolders for {EXTENSIONS})"
+        )));
     }
     let bar = progress::bar(files.len() as u64, what);
     let results: Vec<std::result::Result<DescribedFile, FileError>> = files
         .par_iter()
-        .flat_map_iter(|path| {
-            let out = describe_path(path, params, opts);
+        .flat_map_iter(|input| {
+            let out = describe_path(input, params, opts);
             bar.inc(1);
             out
         })
@@ -183,19 +173,18 @@ pub fn is_e57(path: &Path) -> bool {
         && e57::looks_like_e57(&head)
 }
 
-/// The described scans of one file: one, or one per station of an E57
-/// survey, named `FILE:STATION` (a station that cannot be described is
-/// reported alone; a survey that cannot be read stops there).
+/// The described scans of one file, named by its relative path: one, or
+/// one per station of an E57 survey, named `FILE:STATION` (a station that
+/// cannot be described is reported alone; a survey that cannot be read
+/// stops there).
 fn describe_path(
-    path: &Path,
+    input: &Input,
     params: &DescriptorParams,
     opts: &ReadOptions,
 ) -> Vec<std::result::Result<DescribedFile, FileError>> {
+    let path = input.path.as_path();
     let shown = path.display().to_string();
-    let base = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
+    let base = input.name.clone();
     let failed = |file: &str, e: Error| FileError {
         file: file.to_string(),
         error: e.to_string(),
@@ -221,7 +210,7 @@ fn describe_path(
     }
     let mut out = Vec::new();
     let read = e57::for_each_scan_path(path, &opts.limits, |scan| {
-        // The scan's name is `PATH:STATION`; the short name is `FILE:STATION`.
+        // The scan's name is `PATH:STATION`; the short name is `NAME:STATION`.
         let station = scan.name.strip_prefix(shown.as_str()).unwrap_or(&scan.name);
         out.push(
             placecat::describe(&scan.points, params)

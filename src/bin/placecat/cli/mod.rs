@@ -4,7 +4,9 @@ mod bag;
 mod cluster;
 mod describe;
 mod info;
+mod map;
 mod model;
+mod names;
 mod progress;
 
 use clap::{Parser, Subcommand};
@@ -34,6 +36,7 @@ struct Cli {
 enum Command {
     /// Show what a scan file holds.
     Info {
+        /// The scan file (PLY, PCD, KITTI .bin, LAS/LAZ, E57).
         file: PathBuf,
         /// Print one JSON object (format, count, first, last, sum; for an
         /// E57 survey also scans: name, count, finite, sum, pose of each).
@@ -52,12 +55,18 @@ enum Command {
         /// JSON file of parameters (fields not given keep the preset's values).
         #[arg(long)]
         params: Option<PathBuf>,
-        /// Files or folders (folders: every scan inside, sorted by name),
-        /// and ROS bags (.bag, .mcap): each cloud of the bag's PointCloud2
-        /// topic is one scan, named BAGNAME:TOPIC:INDEX (e.g.
-        /// run.bag:/points:000042, INDEX counted before thinning).
+        /// Files or folders, and ROS bags (.bag, .mcap). Folders are
+        /// searched with all their subfolders (hidden ones skipped) for
+        /// .ply .pcd .bin .las .laz .e57 .bag .mcap, sorted by name. Each
+        /// scan is named by its path relative to the common folder of the
+        /// inputs (`describe sequences` names `00/velodyne/000000.bin`;
+        /// loose files of one folder keep their base names). Each cloud of
+        /// a bag's PointCloud2 topic is one scan, named PATH:TOPIC:INDEX
+        /// (e.g. run.bag:/points:000042, INDEX counted before thinning),
+        /// each station of an E57 survey PATH:scan N.
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
+        /// The descriptors file (JSON) to write; `-` for standard output.
         #[arg(short, long)]
         output: PathBuf,
         #[command(flatten)]
@@ -76,25 +85,38 @@ enum Command {
     },
     /// Cluster described scans into categories.
     Cluster {
+        /// The output of `placecat describe`.
         descriptors: PathBuf,
         #[command(flatten)]
         args: cluster::ClusterArgs,
+        /// The file to write; `-` for standard output.
         #[arg(short, long)]
         output: PathBuf,
+        /// json (OUT.json: files, labels and the method's fields) or csv
+        /// (`file,category` rows under that header). Default: csv for an
+        /// output named *.csv, else json.
+        #[arg(long, value_enum)]
+        format: Option<cluster::Format>,
     },
     /// Compare cluster labels with ground truth (file,label CSV).
     Evaluate {
+        /// The OUT.json of `placecat cluster`.
         clusters: PathBuf,
+        /// `file,label` CSV (header optional). A row matches the scan whose
+        /// name (path relative to the inputs' common folder) is its file,
+        /// else the scan with its base name when no other scan has that
+        /// base name.
         #[arg(long)]
         truth: PathBuf,
     },
     /// DBSCAN over a grid of epsilon x min points (paper Fig. 3): CSV
     /// epsilon,min_points,clusters,inlier_ratio,ari,score.
     Sweep {
+        /// The output of `placecat describe`.
         descriptors: PathBuf,
         #[command(flatten)]
         args: cluster::SweepArgs,
-        /// CSV file to write (default: stdout).
+        /// CSV file to write (default, or `-`: standard output).
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
@@ -103,6 +125,7 @@ enum Command {
         /// indoor, warehouse, outdoor.
         #[arg(long)]
         scene: String,
+        /// Seeds the scene, the route and the sensor noise.
         #[arg(long, default_value_t = 0)]
         seed: u64,
         /// indoor: scans per kind (default 40); others: scans along the route (default 300).
@@ -113,26 +136,33 @@ enum Command {
         /// range; harder).
         #[arg(long, default_value = "one")]
         buildings: String,
+        /// The folder to write the scans, poses.txt, poses_tum.txt and
+        /// labels.csv into (created if missing).
         #[arg(short, long)]
         output: PathBuf,
     },
     /// A named model from described scans and a file,name CSV (the page's
     /// "Export CSV" or a labels.csv): one category per name.
     Model {
+        /// The output of `placecat describe`.
         descriptors: PathBuf,
+        /// `file,name` CSV, matched to the scans as `evaluate --truth` is.
         #[arg(long)]
         names: PathBuf,
+        /// The model file (JSON) to write; `-` for standard output.
         #[arg(short, long)]
         output: PathBuf,
     },
     /// Put new scans into the named categories of a model (the page's
     /// "Export model"): CSV file,category,distance,relative.
     Classify {
+        /// The model: `placecat model`'s output or the page's "Export model".
         model: PathBuf,
-        /// Files or folders (folders: every scan inside, sorted by name).
+        /// Files, folders (searched with their subfolders) and bags, named
+        /// as `describe` names them.
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
-        /// CSV file to write (default: stdout).
+        /// CSV file to write (default, or `-`: standard output).
         #[arg(short, long)]
         output: Option<PathBuf>,
         #[command(flatten)]
@@ -140,9 +170,17 @@ enum Command {
     },
     /// The Delta matrix of described scans, as CSV.
     Distances {
+        /// The output of `placecat describe`.
         descriptors: PathBuf,
+        /// CSV file to write (default, or `-`: standard output).
         #[arg(short, long)]
         output: Option<PathBuf>,
+    },
+    /// Draw the trajectory coloured by category, top-down, as SVG (the
+    /// page's map): over the scans' points when --scans is given.
+    Map {
+        #[command(flatten)]
+        args: map::MapArgs,
     },
 }
 
@@ -237,7 +275,8 @@ pub fn main() -> ExitCode {
             descriptors,
             args,
             output,
-        } => cluster::cluster(&descriptors, &args, &output),
+            format,
+        } => cluster::cluster(&descriptors, &args, &output, format),
         Command::Evaluate { clusters, truth } => cluster::evaluate(&clusters, &truth),
         Command::Sweep {
             descriptors,
@@ -266,6 +305,7 @@ pub fn main() -> ExitCode {
             output,
             limits,
         } => model::classify(&model, &inputs, output.as_deref(), &limits.into()),
+        Command::Map { args } => map::run(&args),
     };
     match result {
         Ok(code) => code,
@@ -276,9 +316,23 @@ pub fn main() -> ExitCode {
     }
 }
 
-/// Write text to a file, or to stdout when no path is given.
+/// True for the output name `-`: standard output.
+pub(crate) fn is_stdout(path: &std::path::Path) -> bool {
+    path.as_os_str() == "-"
+}
+
+/// How messages name an output: its path, or "standard output" for `-`.
+pub(crate) fn shown(path: &std::path::Path) -> String {
+    if is_stdout(path) {
+        "standard output".into()
+    } else {
+        path.display().to_string()
+    }
+}
+
+/// Write text to a file, or to stdout when no path is given or it is `-`.
 pub(crate) fn write_out(path: Option<&std::path::Path>, text: &str) -> placecat::Result<()> {
-    match path {
+    match path.filter(|p| !is_stdout(p)) {
         Some(p) => std::fs::write(p, text)
             .map_err(|e| placecat::Error::from(e).in_file(p.display().to_string())),
         None => {
@@ -291,5 +345,30 @@ pub(crate) fn write_out(path: Option<&std::path::Path>, text: &str) -> placecat:
                 other => other.map_err(|e| placecat::Error::from(e).in_file("standard output")),
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Cli;
+    use clap::CommandFactory;
+
+    /// Every subcommand and every argument says what it is in `--help`.
+    #[test]
+    fn every_argument_has_help_text() {
+        let cli = Cli::command();
+        let mut missing = Vec::new();
+        for sub in cli.get_subcommands() {
+            if sub.get_about().is_none() {
+                missing.push(sub.get_name().to_string());
+            }
+            for arg in sub.get_arguments() {
+                let id = arg.get_id().as_str();
+                if id != "help" && id != "version" && arg.get_help().is_none() {
+                    missing.push(format!("{} {id}", sub.get_name()));
+                }
+            }
+        }
+        assert!(missing.is_empty(), "no help text: {missing:?}");
     }
 }

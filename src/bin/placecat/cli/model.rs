@@ -2,31 +2,34 @@
 //! their names, `placecat classify` puts new scans into its categories
 //! (also for models exported from the page).
 
-use super::cluster::read_truth;
-use super::describe::{describe_files, expand, DescriptorsFile, ReadOptions};
+use super::bag::BagArgs;
+use super::cluster::read_labels;
+use super::describe::{describe_inputs, DescriptorsFile, ReadOptions};
 use placecat::io::csv::quote;
 
 use placecat::model::LabelledModel;
 use placecat::{Error, Result};
-use std::collections::HashMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// One category per distinct name in `names` (`file,name` rows: the page's
-/// "Export CSV", or a labels.csv); scans it does not name are left out.
+/// "Export CSV", or a labels.csv, matched as `evaluate` matches them: on
+/// the relative path, or on a base name only one scan has); scans it does
+/// not name are left out.
 pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode> {
     let set = DescriptorsFile::load(descriptors)?;
     let files = set.names();
-    let table: HashMap<String, String> = read_truth(names)?.into_iter().collect();
+    let table = read_labels(names)?;
     let mut kinds: Vec<String> = Vec::new();
-    let labels: Vec<i32> = files
-        .iter()
-        .map(|f| match table.get(f) {
+    let labels: Vec<i32> = table
+        .for_names(files)
+        .into_iter()
+        .map(|name| match name {
             Some(name) => match kinds.iter().position(|k| k == name) {
                 Some(i) => i as i32,
                 None => {
-                    kinds.push(name.clone());
+                    kinds.push(name.to_string());
                     kinds.len() as i32 - 1
                 }
             },
@@ -49,14 +52,17 @@ pub fn build(descriptors: &Path, names: &Path, output: &Path) -> Result<ExitCode
         "model of {} categories from {} scans ({unnamed} not named) -> {}",
         kinds.len(),
         labels.len() - unnamed,
-        output.display()
+        super::shown(output)
     );
     Ok(ExitCode::SUCCESS)
 }
 
 /// CSV `file,category,distance,relative` to `output` (stdout if none):
 /// each scan's nearest category; relative > 1 means farther from it than
-/// any scan the category was made from. Bad files are reported and skipped.
+/// any scan the category was made from. Scans are named as `describe`
+/// names them (relative to the inputs' common root), so the rows agree
+/// with `cluster`'s; a bag's clouds are read as `describe BAG` reads them
+/// by default. Bad files are reported and skipped.
 pub fn classify(
     model: &Path,
     inputs: &[PathBuf],
@@ -66,14 +72,22 @@ pub fn classify(
     let shown = model.display().to_string();
     let text = std::fs::read_to_string(model).map_err(|e| Error::from(e).in_file(&shown))?;
     let model = LabelledModel::from_json(&text).map_err(|e| e.in_file(&shown))?;
-    let files = expand(inputs)?;
+    // The scans are described with the model's own parameters; a bag's
+    // clouds as `describe BAG` reads them by default.
+    let bag_args = BagArgs {
+        every: 1,
+        ..BagArgs::default()
+    };
+    let (set, of) = describe_inputs(
+        inputs,
+        model.params.clone(),
+        limits,
+        &bag_args,
+        "classifying",
+    )?;
     let mut out = String::from("file,category,distance,relative\n");
     let mut classified = 0;
-    // The scans are described with the model's own parameters.
-    for described in describe_files(&files, &model.params, limits, "classifying")?
-        .into_iter()
-        .flatten()
-    {
+    for described in set.files {
         // Described with the model's parameters, a scan matches its shape;
         // should it not, that one file is reported, never the batch ended.
         let c = match model.classify(&described.descriptor) {
@@ -87,7 +101,7 @@ pub fn classify(
         writeln!(
             out,
             "{},{},{},{}",
-            quote(&described.path),
+            quote(&described.name),
             quote(&c.name),
             c.distance,
             c.relative
@@ -95,7 +109,7 @@ pub fn classify(
         .expect("writing to a String");
     }
     super::write_out(output, &out)?;
-    eprintln!("classified {classified} of {} files", files.len());
+    eprintln!("classified {classified} of {of}");
     Ok(if classified == 0 {
         ExitCode::FAILURE
     } else {

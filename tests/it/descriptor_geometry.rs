@@ -1,6 +1,6 @@
-//! The descriptor on known geometry (DESIGN.md Sec. 2).
+//! The descriptor on known geometry (docs/design.md#descriptor).
 
-mod common;
+use crate::common;
 use common::*;
 use placecat::descriptor::directions::{hemisphere, nearest};
 use placecat::descriptor::ndt_grid;

@@ -4,8 +4,9 @@
 //! and damaged files refused with a message naming the file.
 //!
 //! The files are embedded, so the same tests run natively and in wasm
-//! (`wasm-pack test --node -- --test survey`); reading from paths and the
-//! panic guard around the LAZ decoder are native only.
+//! (`wasm-pack test --node -- --no-default-features --test it survey`);
+//! reading from paths and the panic guard around the LAZ decoder are
+//! native only.
 
 use placecat::io::e57::{for_each_scan, read_scans};
 use placecat::io::recording::RecordedScan;
@@ -20,7 +21,7 @@ fn bytes(name: &str) -> &'static [u8] {
     macro_rules! files {
         ($($f:literal),*) => {
             match name {
-                $($f => include_bytes!(concat!("data/survey/", $f)),)*
+                $($f => include_bytes!(concat!("../data/survey/", $f)),)*
                 _ => panic!("no fixture {name}"),
             }
         };

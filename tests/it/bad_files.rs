@@ -2,7 +2,7 @@
 //! make_bad.py): each file gives exactly the message in expected.tsv,
 //! strict and lenient. tests/wasm_api runs the same table in wasm32.
 
-include!("common/bad_corpus.rs");
+include!("../common/bad_corpus.rs");
 
 use placecat::io::{read_scan_named, ReadLimits};
 
@@ -46,7 +46,7 @@ fn the_embedded_list_is_the_folder() {
 
 /// Print the table's rows as the readers give them (to write expected.tsv
 /// after adding a file; check every message by eye before keeping it):
-/// `cargo test --test bad_files -- --ignored --nocapture`.
+/// `cargo test --test it bad_files -- --ignored --nocapture`.
 #[test]
 #[ignore]
 fn print_rows() {

@@ -1,6 +1,6 @@
 //! Readers: round trips through every format, the real files, and bad input.
 
-mod common;
+use crate::common;
 use common::*;
 use placecat::io::write::{self, PcdData, PlyEncoding};
 use placecat::io::{poses, read_scan, read_scan_named, ReadLimits};

@@ -1,8 +1,8 @@
 //! Native side of the native/wasm parity check: the labels computed here
 //! must equal tests/fixtures/parity.json, which the wasm tests check too.
-//! Regenerate the fixture with PLACECAT_WRITE_FIXTURES=1 cargo test --test parity.
+//! Regenerate the fixture with PLACECAT_WRITE_FIXTURES=1 cargo test --test it parity.
 
-include!("common/parity_case.rs");
+include!("../common/parity_case.rs");
 
 #[test]
 fn native_labels_match_the_shared_fixture() {

@@ -1,7 +1,7 @@
 //! The rule that chooses the number of categories, on descriptor sets of
 //! known structure and on real files of known places.
 
-mod common;
+use crate::common;
 use common::*;
 use placecat::cluster::choose_k::{choose_k, ChooseKParams, Clusterer, Rule, DEFAULT_RULE};
 use placecat::cluster::hkmeans::HkMeansParams;

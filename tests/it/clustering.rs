@@ -1,6 +1,6 @@
 //! Clustering and evaluation: known answers, boundaries, seeds, tree cuts.
 
-mod common;
+use crate::common;
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
 use placecat::eval::{adjusted_rand_index, confusion, evaluate, Mapping};

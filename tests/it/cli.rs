@@ -1,35 +1,9 @@
 //! The `placecat` command line: the forms other tooling scripts against.
 
-mod common;
+use crate::cli_common::*;
+use crate::common;
 use common::*;
 use placecat::io::write::{self, PlyEncoding};
-use std::process::{Command, Output};
-
-fn placecat() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_placecat"))
-}
-
-/// Run `cmd` and require success; a failure shows the command and stderr.
-fn succeeds(cmd: &mut Command) -> Output {
-    let out = cmd.output().unwrap();
-    assert!(
-        out.status.success(),
-        "{cmd:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out
-}
-
-/// Run `cmd` and require failure; its stderr.
-fn fails(cmd: &mut Command) -> String {
-    let out = cmd.output().unwrap();
-    assert!(!out.status.success(), "{cmd:?} succeeded");
-    String::from_utf8_lossy(&out.stderr).into_owned()
-}
-
-fn read_json(path: &std::path::Path) -> serde_json::Value {
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
-}
 
 /// The names of the described scans in a `describe` OUT.json.
 fn described_names(v: &serde_json::Value) -> Vec<&str> {
@@ -39,12 +13,6 @@ fn described_names(v: &serde_json::Value) -> Vec<&str> {
         .iter()
         .map(|f| f["name"].as_str().unwrap())
         .collect()
-}
-
-fn tmp(name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("placecat-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 #[test]
@@ -365,7 +333,19 @@ fn simulate_describe_cluster_evaluate_round_trip() {
             &["--method", "hkmeans", "--threshold", "NaN"][..],
             "threshold",
         ),
-        (&["--method", "hkmeans"][..], "exactly one of"),
+        // No count is the automatic one (auto_categories_follow_the_data);
+        // two are one too many.
+        (
+            &[
+                "--method",
+                "hkmeans",
+                "--threshold",
+                "1",
+                "--categories",
+                "2",
+            ][..],
+            "not both",
+        ),
     ] {
         let e = fails(
             placecat()
@@ -387,7 +367,7 @@ fn sweep_agrees_with_dbscan(
     dir: &std::path::Path,
     db: &serde_json::Value,
 ) {
-    let rows = |out: &Output| -> Vec<Vec<String>> {
+    let rows = |out: &std::process::Output| -> Vec<Vec<String>> {
         String::from_utf8_lossy(&out.stdout)
             .lines()
             .map(|l| l.split(',').map(String::from).collect())

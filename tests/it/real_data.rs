@@ -1,7 +1,7 @@
 //! Real-data sanity: for every scan in groups.csv, its nearest other scan
 //! under Delta is from the same place. No parameter was tuned on this.
 
-mod common;
+use crate::common;
 use common::*;
 use placecat::io::{read_scan_named, ReadLimits};
 use placecat::{delta_matrix, describe, DescriptorParams, DistanceOptions};

@@ -1,7 +1,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 //! Property tests of the invariants (proptest).
 
-mod common;
+use crate::common;
 use common::*;
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;

@@ -1,0 +1,30 @@
+//! The Rust integration tests, in one binary: one module a subject, so the
+//! crate is linked once rather than once per file (`cargo test --test it`;
+//! `cargo test --test it cli::` runs one module).
+//!
+//! Kept apart: `tests/fuzz_regressions.rs` (also run in a debug build by
+//! scripts/test.sh, where a hang cannot be optimised away) and
+//! `tests/web.rs` / `tests/node.rs` (the wasm API tests, `tests/wasm_api/`,
+//! that `wasm-pack test` runs in Chromium and in Node). Helpers shared with
+//! them are in `tests/common/`.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod bad_files;
+mod bags;
+mod choose_k;
+mod cli;
+mod cli_bags;
+mod cli_common;
+mod cli_trees;
+mod clustering;
+mod descriptor_geometry;
+mod parity;
+mod properties;
+mod readers;
+mod readme;
+mod real_data;
+mod simulator;
+mod survey;
+mod untrusted_json;
