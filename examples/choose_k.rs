@@ -11,6 +11,8 @@
 //! trajectory (default: the simulator's own count). Writes a markdown
 //! table to stdout and, given a path, to that file.
 
+#[path = "common/real.rs"]
+mod real;
 use placecat::cluster::choose_k::{best_k, scores, ChooseKParams, Clusterer, Rule, Scores};
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
@@ -224,24 +226,10 @@ fn summarise(ks: &[usize]) -> String {
 }
 
 fn real_sets() -> Vec<Set> {
-    let real = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
-    let Ok(groups) = std::fs::read_to_string(format!("{real}/groups.csv")) else {
-        eprintln!("no {real}/groups.csv: real files left out");
+    let scans = real::real_scans();
+    if scans.is_empty() {
         return vec![];
-    };
-    let scans: Vec<(String, String, Vec<[f32; 3]>)> = groups
-        .lines()
-        .skip(1)
-        .filter_map(|l| l.split_once(','))
-        .map(|(f, p)| {
-            let c = io::read_path(
-                std::path::Path::new(&format!("{real}/{f}")),
-                &Default::default(),
-            )
-            .unwrap();
-            (f.to_string(), p.to_string(), c.points)
-        })
-        .collect();
+    }
     let mut folders: Vec<&str> = scans
         .iter()
         .map(|s| s.0.split('/').next().unwrap())

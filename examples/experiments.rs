@@ -26,6 +26,8 @@ mod sites;
 
 #[path = "common/choose_k_section.rs"]
 mod choose_k_section;
+#[path = "common/real.rs"]
+mod real;
 
 struct Set {
     truth: Vec<String>,
@@ -528,7 +530,7 @@ fn main() {
     let rb = run(&bands, &bands_p, 5);
     writeln!(
         out,
-        "### Preset `indoor_bands` (DESIGN.md Sec. 2b: height bands, no far ranges, te = 0.1)\n"
+        "### Preset `indoor_bands` ([design](design.md#variants): height bands, no far ranges, te = 0.1)\n"
     )
     .unwrap();
     table_one(&mut out, &rb);
@@ -596,7 +598,7 @@ fn main() {
         "preset `indoor_bands`, seeds 1-10",
         seed_rows(None, &all, &one, &bands_p),
     );
-    // The distance options of DESIGN.md Sec. 2b, with the paper's counts.
+    // The distance options of docs/design.md#variants, with the paper's counts.
     for (name, metric, normalisation) in [
         ("Hellinger", Metric::Hellinger, Normalisation::Total),
         ("chi-squared", Metric::ChiSquared, Normalisation::Total),
@@ -773,21 +775,8 @@ fn main() {
     }
 
     // 5. Real files.
-    let real = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
-    if let Ok(groups) = std::fs::read_to_string(format!("{real}/groups.csv")) {
-        let scans: Vec<(String, String, Vec<[f32; 3]>)> = groups
-            .lines()
-            .skip(1)
-            .filter_map(|l| l.split_once(','))
-            .map(|(f, p)| {
-                let c = io::read_path(
-                    std::path::Path::new(&format!("{real}/{f}")),
-                    &Default::default(),
-                )
-                .unwrap();
-                (f.to_string(), p.to_string(), c.points)
-            })
-            .collect();
+    let scans = real::real_scans();
+    if !scans.is_empty() {
         writeln!(out, "## 5. Real scans (`tests/data/real`, 18 files, 4 places)\n\n| preset | nearest neighbour | hierarchical, 4 categories (10 seeds) | deterministic k-means k=4 |\n|---|---|---|---|").unwrap();
         let mut counts = String::new();
         for p in [DescriptorParams::indoor(), DescriptorParams::outdoor()] {
