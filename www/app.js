@@ -14,7 +14,6 @@ import { beginSession, saveScan, lastSession } from './session.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 
 /** @typedef {import('./state.js').State} State */
-
 let state = S.initialState();
 const engine = new Engine(wasm);
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url));
