@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 if [ "${1:-}" != "--force" ] && [ -f pkg/package.json ] && \
-   [ -z "$(find src Cargo.toml Cargo.lock scripts/assemble-pkg.mjs -newer pkg/package.json -print -quit)" ]; then
+   [ -z "$(find src Cargo.toml Cargo.lock scripts/assemble-pkg.mjs js/README.md -newer pkg/package.json -print -quit)" ]; then
   echo "[build-pkg] pkg/ is up to date" >&2
   exit 0
 fi
