@@ -19,11 +19,13 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
+mod bag;
 mod model;
 mod scan;
 mod set;
 mod simulator;
 
+pub use bag::{bag_topics, BagClouds};
 pub use model::{ClusterTree, Model};
 pub use scan::{describe_points, describe_scan, read_scan, DescribedScan, Scan};
 pub use set::DescriptorSet;

@@ -51,6 +51,8 @@ pub struct DescribedScan {
     format: &'static str,
     pub(super) descriptor: Descriptor,
     preview: Vec<f32>,
+    /// Where the recording put the sensor (bag clouds); None for files.
+    pub(super) pose: Option<io::poses::Pose>,
 }
 
 impl DescribedScan {
@@ -69,6 +71,7 @@ impl DescribedScan {
             format,
             preview: crate::cloud::decimate(points, preview_points.unwrap_or(4000)),
             descriptor,
+            pose: None,
         })
     }
 }
@@ -95,6 +98,12 @@ impl DescribedScan {
     /// Decimated finite points, interleaved x, y, z (sensor frame).
     pub fn preview(&self) -> js_sys::Float32Array {
         js_sys::Float32Array::from(&self.preview[..])
+    }
+    /// The sensor's pose where the recording holds one (a bag cloud with
+    /// odometry or tf: `{name, time, position, yaw}`), else `null`.
+    #[wasm_bindgen(unchecked_return_type = "Pose | null")]
+    pub fn pose(&self) -> WasmResult<JsValue> {
+        to_js(&self.pose)
     }
     /// The descriptor as JSON text (to pass between workers or store).
     #[wasm_bindgen(js_name = descriptorJson)]

@@ -353,3 +353,133 @@ fn describe_points_matches_the_file_and_names_the_scan() {
     );
     assert!(e.contains("voxel_size"), "{e}");
 }
+
+/// A bag's bytes served a range at a time by a JS function, as a worker
+/// serves them from `File.slice`; the ranges asked for are recorded.
+fn bag_reader(
+    bytes: &'static [u8],
+    asked: std::rc::Rc<std::cell::RefCell<Vec<(f64, f64)>>>,
+) -> js_sys::Function {
+    let read =
+        Closure::<dyn FnMut(f64, f64) -> js_sys::Uint8Array>::new(move |offset: f64, len: f64| {
+            asked.borrow_mut().push((offset, len));
+            let (o, n) = (offset as usize, len as usize);
+            js_sys::Uint8Array::from(&bytes[o..o + n])
+        });
+    read.into_js_value().unchecked_into()
+}
+
+/// The corridor bag (written by the Python `rosbags` package, see
+/// tests/data/bags/make_bags.py): its topics, then its two clouds of 2700
+/// points each described with their odometry poses and names.
+#[wasm_bindgen_test]
+fn a_bag_streams_through_a_read_function_into_described_clouds_with_poses() {
+    const BAG: &[u8] = include_bytes!("../data/bags/ros1_corridor.bag");
+    let asked = std::rc::Rc::new(std::cell::RefCell::new(Vec::new()));
+    let size = BAG.len() as f64;
+    let topics = bag_topics(size, bag_reader(BAG, asked.clone()), "ros1_corridor.bag").unwrap();
+    let topics: Vec<(String, String, u64)> = js_sys::Array::from(&topics)
+        .iter()
+        .map(|t| {
+            let s = |k| get(&t, k).as_string().unwrap();
+            (
+                s("name"),
+                s("type"),
+                get(&t, "count").as_f64().unwrap() as u64,
+            )
+        })
+        .collect();
+    assert_eq!(
+        topics,
+        [
+            ("/odom".into(), "nav_msgs/Odometry".into(), 2),
+            ("/points".into(), "sensor_msgs/PointCloud2".into(), 2)
+        ]
+    );
+    asked.borrow_mut().clear();
+    let mut clouds = BagClouds::new(
+        size,
+        bag_reader(BAG, asked.clone()),
+        "ros1_corridor.bag",
+        None,
+        None,
+        None,
+        None,
+        Some(100),
+    )
+    .unwrap();
+    assert_eq!((clouds.topic().as_str(), clouds.total()), ("/points", 2.0));
+    let mut got = Vec::new();
+    while let Some(d) = clouds.next_cloud().unwrap() {
+        let pose = d.pose().unwrap();
+        let position: Vec<f64> = serde_wasm_bindgen::from_value(get(&pose, "position")).unwrap();
+        let summary = d.summary().unwrap();
+        assert_eq!(get(&summary, "points").as_f64(), Some(2700.0));
+        assert_eq!(d.format(), "ros_bag");
+        assert!(d.preview().length() <= 300);
+        got.push((d.name(), position));
+    }
+    assert_eq!(clouds.met(), 2.0);
+    assert_eq!(
+        got,
+        [
+            (
+                "ros1_corridor.bag:/points:000000".to_string(),
+                vec![0.0, 0.0, 0.0]
+            ),
+            (
+                "ros1_corridor.bag:/points:000001".to_string(),
+                vec![0.5, 0.25, 0.0]
+            )
+        ]
+    );
+    // Read in ranges, never past the end.
+    let asked = asked.borrow();
+    assert!(!asked.is_empty());
+    assert!(
+        asked.iter().all(|&(o, n)| n > 0.0 && o + n <= size),
+        "{asked:?}"
+    );
+    // A bag with two cloud topics names them; a read function that lies is
+    // an Error naming the bag; a file that is not a bag says so.
+    const TWO: &[u8] = include_bytes!("../data/bags/two_cloud_topics.bag");
+    let e = message(
+        BagClouds::new(
+            TWO.len() as f64,
+            bag_reader(TWO, Default::default()),
+            "two.bag",
+            None,
+            None,
+            None,
+            None,
+            None,
+        )
+        .err()
+        .unwrap(),
+    );
+    assert!(e.starts_with("two.bag: ") && e.contains("/points"), "{e}");
+    let short: js_sys::Function =
+        Closure::<dyn FnMut(f64, f64) -> js_sys::Uint8Array>::new(|_: f64, _: f64| {
+            js_sys::Uint8Array::new_with_length(3)
+        })
+        .into_js_value()
+        .unchecked_into();
+    let e = message(bag_topics(size, short, "short.bag").err().unwrap());
+    assert!(
+        e.starts_with("short.bag: ") && e.contains("returned 3 bytes"),
+        "{e}"
+    );
+    let e = message(
+        bag_topics(
+            PARITY_FILES[3].1.len() as f64,
+            bag_reader(PARITY_FILES[3].1, Default::default()),
+            "room.pcd",
+        )
+        .err()
+        .unwrap(),
+    );
+    assert!(
+        e.starts_with("room.pcd: ") && e.contains("not a ROS bag"),
+        "{e}"
+    );
+}
