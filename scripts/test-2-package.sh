@@ -3,12 +3,10 @@
 # fresh project, and use it from a plain Node ESM script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build-pkg.sh
 root=$(pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-(cd pkg && npm pack --silent --pack-destination "$work" >/dev/null)
-tarball=$(ls "$work"/placecat-*.tgz)
+tarball=$(bash scripts/pack-pkg.sh "$work")
 cd "$work"
 npm init -y >/dev/null
 npm install --no-audit --no-fund --silent "$tarball"
@@ -129,6 +127,19 @@ const poses = pc.parsePoses('a.pcd,1,2\nb.pcd,3,4\n', 'poses.csv');
 same('Poses', poses);
 same('Pose', poses.poses[0]);
 assert.equal(poses.poses[0].time, null, 'a CSV pose has time null');
+// A ROS bag served a range at a time (as a worker serves File.slice).
+const bag = readFileSync(`${real}/../bags/ros1_corridor.bag`);
+const readBag = (offset, length) => bag.subarray(offset, offset + length);
+const topics = pc.bagTopics(bag.length, readBag, 'corridor.bag');
+same('TopicInfo', topics[0]);
+assert.deepEqual(topics.map((t) => `${t.name} ${t.count}`), ['/odom 2', '/points 2']);
+const clouds = new pc.BagClouds(bag.length, readBag, 'corridor.bag');
+const cloud = clouds.next();
+assert.equal(cloud.name, 'corridor.bag:/points:000000');
+same('Pose', cloud.pose());
+assert.deepEqual(clouds.next().pose().position, [0.5, 0.25, 0]);
+assert.equal(clouds.next(), undefined, 'two clouds, then undefined');
+assert.equal(scans[0].pose(), null, 'a file has no pose');
 // The hand-written literal types name only values the API takes.
 const literals = (name) => dts.match(new RegExp(`export type ${name} = ([^;]*);`))[1].split('|').map((x) => JSON.parse(x.trim()));
 for (const p of literals('Preset')) assert.equal(pc.presetParams(p).preset, p);
@@ -141,7 +152,7 @@ node shapes.mjs "$real"
 # (wasm-bindgen's classes declare [Symbol.dispose]: lib esnext.disposable).
 # Node resolution gets the node declarations, which need nothing more.
 cat > typed.ts <<'TS'
-import { DescriptorSet, Simulator, describePoints, describeScan, presetParams, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
+import { BagClouds, DescriptorSet, Simulator, bagTopics, describePoints, describeScan, presetParams, type DescribedScan, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
 const params: Required<DescriptorParams> = presetParams('indoor');
 const set = new DescriptorSet({ voxel_size: params.voxel_size }, 'indoor');
 const cut: Cut = set.hkmeans(0).cutK(2);
@@ -154,7 +165,10 @@ const medoid: number = set.kmedoids(2, 0).medoids[0];
 const bytes: Uint8Array = new Simulator('indoor', 1, 1).scan(0).bytes;
 const fromPoints: number = describePoints(new Float32Array(9), 'three points', { voxel_size: 1 }).summary().points;
 const fromBuffer: string = describeScan(new ArrayBuffer(0), 'empty.ply').format;
-export const used = [fromPoints, fromBuffer, cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km, medoid, bytes.length];
+const clouds = new BagClouds(3, (offset: number, length: number) => new Uint8Array(length), 'a.bag', '/points', 1);
+const next: DescribedScan | undefined = clouds.next();
+const topicCount: number = bagTopics(3, () => new ArrayBuffer(3), 'a.bag')[0].count;
+export const used = [next?.pose()?.position[0], topicCount, fromPoints, fromBuffer, cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km, medoid, bytes.length];
 TS
 echo "--- no public method returns or takes 'any' (the raw wasm exports aside)"
 if grep -vE '^\s*readonly [A-Za-z_]+: \(' node_modules/placecat/web/placecat.d.ts | grep -nE ': any\b'; then

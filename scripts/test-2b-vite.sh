@@ -5,12 +5,10 @@
 # server and as a production build in headless Chromium (tests/vite-app/run.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build-pkg.sh
 root=$(pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-(cd pkg && npm pack --silent --pack-destination "$work" >/dev/null)
-tarball=$(ls "$work"/placecat-*.tgz)
+tarball=$(bash scripts/pack-pkg.sh "$work")
 cp -r tests/vite-app "$work/app"
 node tests/vite-app/from-readme.mjs js/README.md "$work/app"
 cd "$work/app"
