@@ -1,5 +1,6 @@
-// Writes pkg/package.json (version from Cargo.toml), pkg/README.md and the
-// size note used by the README.
+// Writes pkg/package.json (version from Cargo.toml), pkg/README.md (the
+// package's own, for JS users: js/README.md) and the size note used by the
+// README.
 import { readFileSync, writeFileSync, copyFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 
@@ -37,7 +38,7 @@ const pkg = {
 writeFileSync('pkg/package.json', JSON.stringify(pkg, null, 2) + '\n');
 // wasm-pack's nodejs output is CommonJS; mark its folder so.
 writeFileSync('pkg/node/package.json', JSON.stringify({ type: 'commonjs' }) + '\n');
-copyFileSync('README.md', 'pkg/README.md');
+copyFileSync('js/README.md', 'pkg/README.md');
 
 const wasm = readFileSync('pkg/web/placecat_bg.wasm');
 const gz = gzipSync(wasm, { level: 9 }).length;

@@ -1,13 +1,19 @@
 #!/usr/bin/env bash
 # Build the npm package into pkg/: the wasm for the web, bundler and nodejs
 # targets (release), and one package.json whose `exports` picks the right
-# one. Skips the build when pkg/ is newer than every source file.
+# one. Skips the wasm build when pkg/ is newer than every source file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-if [ "${1:-}" != "--force" ] && [ -f pkg/package.json ] && \
-   [ -z "$(find src Cargo.toml Cargo.lock scripts/assemble-pkg.mjs -newer pkg/package.json -print -quit)" ]; then
-  echo "[build-pkg] pkg/ is up to date" >&2
+newer() { [ -n "$(find "$@" -newer pkg/package.json -print -quit)" ]; }
+if [ "${1:-}" != "--force" ] && [ -f pkg/package.json ] && ! newer src Cargo.toml Cargo.lock; then
+  # The wasm is current; only the package's files may need writing again
+  # (package.json, the README).
+  if newer scripts/assemble-pkg.mjs js/README.md; then
+    node scripts/assemble-pkg.mjs
+  else
+    echo "[build-pkg] pkg/ is up to date" >&2
+  fi
   exit 0
 fi
 rm -rf pkg

@@ -3,19 +3,17 @@
 # fresh project, and use it from a plain Node ESM script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build-pkg.sh
 root=$(pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-(cd pkg && npm pack --silent --pack-destination "$work" >/dev/null)
-tarball=$(ls "$work"/placecat-*.tgz)
+tarball=$(bash scripts/pack-pkg.sh "$work")
 cd "$work"
 npm init -y >/dev/null
 npm install --no-audit --no-fund --silent "$tarball"
 cat > consume.mjs <<'JS'
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
-import { describeScan, DescriptorSet, version } from 'placecat';
+import { describePoints, describeScan, DescriptorSet, readScan, version } from 'placecat';
 
 const real = process.argv[2];
 const files = ['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd', 'velodyne_pair/251370668.pcd', 'velodyne_pair/251371071.pcd'];
@@ -36,21 +34,46 @@ assert.ok(cut[0] === cut[1] && cut[2] === cut[3] && cut[0] !== cut[2], `hkmeans 
 const sweep = set.dbscanSweep(set.epsilonGrid(), [2], ['room', 'room', 'street', 'street']);
 assert.ok(sweep.some((p) => p.clusters === 2 && p.score === 1), `sweep: ${JSON.stringify(sweep)}`);
 assert.throws(() => set.kmeans(0, 'stride', 0), /k must be at least 1/);
+// Bytes as an ArrayBuffer (what fetch and File.arrayBuffer() give), and the
+// same points from memory: one descriptor.
+const buf = readFileSync(`${real}/${files[0]}`);
+const arrayBuffer = buf.buffer.slice(buf.byteOffset, buf.byteOffset + buf.byteLength);
+const fromBuffer = readScan(arrayBuffer, files[0]);
+assert.equal(fromBuffer.count, 112586);
+const again = new DescriptorSet(undefined, 'indoor');
+again.add(describeScan(arrayBuffer, files[0]));
+again.add(describePoints(fromBuffer.positions(), 'room in memory'));
+assert.equal(again.delta(0, 1), 0);
+assert.throws(() => describePoints(new Float32Array(4), 'four.xyz'), /^Error: four\.xyz: .*4 numbers is not a multiple of 3/);
+assert.throws(() => readScan('room.pcd', 'room.pcd'), /^Error: room\.pcd: the bytes must be a Uint8Array or an ArrayBuffer, not a string/);
 console.log(`placecat ${version()} from the packed tarball: labels ${labels.join(',')}`);
 JS
 node consume.mjs "$root/tests/data/real"
 
-# The README's Node example, verbatim, beside the files it names: docs that run.
+# The READMEs' Node examples, verbatim, beside the files they name: docs
+# that run. The package's own README (js/README.md, shipped as the
+# package's README.md) and the repository's.
 real="$root/tests/data/real"
 ln -s "$real"/pcl_room/room_scan1.pcd "$real"/pcl_room/room_scan2.pcd \
   "$real"/velodyne_pair/251370668.pcd "$real"/velodyne_pair/251371071.pcd .
-node -e '
+first_js_block() {
+  node -e '
 const text = require("fs").readFileSync(process.argv[1], "utf8");
-const block = text.split("```js\n")[1].split("```")[0];
-require("fs").writeFileSync("readme-example.mjs", block);
-' "$root/README.md"
-echo "--- the README's Node example"
-node readme-example.mjs
+process.stdout.write(text.split("```js\n")[1].split("```")[0]);
+' "$1"
+}
+cmp -s "$root/js/README.md" node_modules/placecat/README.md || { echo "the package does not ship js/README.md as its README"; exit 1; }
+first_js_block "$root/js/README.md" > pkg-readme-example.mjs
+echo "--- the package README's Node example"
+out=$(node pkg-readme-example.mjs)
+echo "$out" | tail -3
+# What its comments promise: rooms apart from street, and the scan in
+# memory classified as street.
+echo "$out" | grep -q "^\[ 0, 0, 1, 1 \]" || { echo "expected labels [ 0, 0, 1, 1 ]"; exit 1; }
+echo "$out" | grep -q "name: 'street'" || { echo "expected the points in memory classified as street"; exit 1; }
+first_js_block "$root/README.md" > readme-example.mjs
+echo "--- the repository README's Node example"
+node readme-example.mjs >/dev/null
 
 # The .d.ts promises what the objects hold: every interface the API returns
 # has exactly the keys of the object that comes back, and null (not
@@ -104,6 +127,19 @@ const poses = pc.parsePoses('a.pcd,1,2\nb.pcd,3,4\n', 'poses.csv');
 same('Poses', poses);
 same('Pose', poses.poses[0]);
 assert.equal(poses.poses[0].time, null, 'a CSV pose has time null');
+// A ROS bag served a range at a time (as a worker serves File.slice).
+const bag = readFileSync(`${real}/../bags/ros1_corridor.bag`);
+const readBag = (offset, length) => bag.subarray(offset, offset + length);
+const topics = pc.bagTopics(bag.length, readBag, 'corridor.bag');
+same('TopicInfo', topics[0]);
+assert.deepEqual(topics.map((t) => `${t.name} ${t.count}`), ['/odom 2', '/points 2']);
+const clouds = new pc.BagClouds(bag.length, readBag, 'corridor.bag');
+const cloud = clouds.next();
+assert.equal(cloud.name, 'corridor.bag:/points:000000');
+same('Pose', cloud.pose());
+assert.deepEqual(clouds.next().pose().position, [0.5, 0.25, 0]);
+assert.equal(clouds.next(), undefined, 'two clouds, then undefined');
+assert.equal(scans[0].pose(), null, 'a file has no pose');
 // The hand-written literal types name only values the API takes.
 const literals = (name) => dts.match(new RegExp(`export type ${name} = ([^;]*);`))[1].split('|').map((x) => JSON.parse(x.trim()));
 for (const p of literals('Preset')) assert.equal(pc.presetParams(p).preset, p);
@@ -116,7 +152,7 @@ node shapes.mjs "$real"
 # (wasm-bindgen's classes declare [Symbol.dispose]: lib esnext.disposable).
 # Node resolution gets the node declarations, which need nothing more.
 cat > typed.ts <<'TS'
-import { DescriptorSet, Simulator, presetParams, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
+import { BagClouds, DescriptorSet, Simulator, bagTopics, describePoints, describeScan, presetParams, type DescribedScan, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
 const params: Required<DescriptorParams> = presetParams('indoor');
 const set = new DescriptorSet({ voxel_size: params.voxel_size }, 'indoor');
 const cut: Cut = set.hkmeans(0).cutK(2);
@@ -127,7 +163,12 @@ const radius: number = set.buildModel(Int32Array.from(cut.labels), { 0: 'room' }
 const km = set.kmeans(2, 'stride', 0).labels.length + new Simulator('indoor', 1).length;
 const medoid: number = set.kmedoids(2, 0).medoids[0];
 const bytes: Uint8Array = new Simulator('indoor', 1, 1).scan(0).bytes;
-export const used = [cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km, medoid, bytes.length];
+const fromPoints: number = describePoints(new Float32Array(9), 'three points', { voxel_size: 1 }).summary().points;
+const fromBuffer: string = describeScan(new ArrayBuffer(0), 'empty.ply').format;
+const clouds = new BagClouds(3, (offset: number, length: number) => new Uint8Array(length), 'a.bag', '/points', 1);
+const next: DescribedScan | undefined = clouds.next();
+const topicCount: number = bagTopics(3, () => new ArrayBuffer(3), 'a.bag')[0].count;
+export const used = [next?.pose()?.position[0], topicCount, fromPoints, fromBuffer, cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km, medoid, bytes.length];
 TS
 echo "--- no public method returns or takes 'any' (the raw wasm exports aside)"
 if grep -vE '^\s*readonly [A-Za-z_]+: \(' node_modules/placecat/web/placecat.d.ts | grep -nE ': any\b'; then

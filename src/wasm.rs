@@ -17,18 +17,25 @@ use crate::model::LabelledModel;
 use crate::{sim, Error};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
 
+mod bag;
 mod model;
 mod scan;
 mod set;
 mod simulator;
 
+pub use bag::{bag_topics, BagClouds};
 pub use model::{ClusterTree, Model};
-pub use scan::{describe_scan, read_scan, DescribedScan, Scan};
+pub use scan::{describe_points, describe_scan, read_scan, DescribedScan, Scan};
 pub use set::DescriptorSet;
 pub use simulator::Simulator;
 
 type WasmResult<T> = std::result::Result<T, JsError>;
+
+/// A JS argument that may be left out (then `None`, as `undefined` and
+/// `null` are): the .d.ts marks it optional (`params?:`).
+type OptionalJs = Option<JsValue>;
 
 /// Plain objects (maps become objects, not `Map`s).
 fn to_js<T: Serialize + ?Sized>(v: &T) -> WasmResult<JsValue> {
@@ -46,6 +53,47 @@ fn params_from_js(params: JsValue, preset: Option<String>) -> WasmResult<Descrip
 
 fn names_from_js(names: JsValue) -> WasmResult<Vec<(i32, String)>> {
     Ok(category_names(&json_of(names)?.unwrap_or_default())?)
+}
+
+/// A file's bytes from JS: a `Uint8Array` (a Node `Buffer` is one) or an
+/// `ArrayBuffer` (what `File.arrayBuffer()` and `fetch` give). Anything
+/// else is an error naming the file: wasm-bindgen's own `&[u8]` would read
+/// an `ArrayBuffer` as empty and say so, which misleads.
+fn bytes_from_js(bytes: &JsValue, name: &str) -> WasmResult<Vec<u8>> {
+    if let Some(a) = bytes.dyn_ref::<js_sys::Uint8Array>() {
+        return Ok(a.to_vec());
+    }
+    if let Some(b) = bytes.dyn_ref::<js_sys::ArrayBuffer>() {
+        return Ok(js_sys::Uint8Array::new(b).to_vec());
+    }
+    let hint = if bytes.is_instance_of::<js_sys::Float32Array>() {
+        " (points already in memory go to describePoints)"
+    } else {
+        ""
+    };
+    Err(JsError::new(&format!(
+        "{name}: the bytes must be a Uint8Array or an ArrayBuffer, not {}{hint}",
+        js_kind(bytes)
+    )))
+}
+
+/// What a JS value is, for error messages: `undefined`, `null`, `a string`,
+/// or an object's constructor name (`Float32Array`, `Object`).
+fn js_kind(v: &JsValue) -> String {
+    if v.is_undefined() {
+        return "undefined".into();
+    }
+    if v.is_null() {
+        return "null".into();
+    }
+    if !v.is_object() {
+        return format!("a {}", v.js_typeof().as_string().unwrap_or_default());
+    }
+    js_sys::Reflect::get(v, &"constructor".into())
+        .and_then(|c| js_sys::Reflect::get(&c, &"name".into()))
+        .ok()
+        .and_then(|n| n.as_string())
+        .unwrap_or_else(|| "an object".into())
 }
 
 fn descriptor_from_json(json: &str) -> crate::Result<Descriptor> {

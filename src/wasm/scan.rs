@@ -1,4 +1,4 @@
-//! `Scan`, `DescribedScan`, `readScan` and `describeScan`.
+//! `Scan`, `DescribedScan`, `readScan`, `describeScan` and `describePoints`.
 
 use super::*;
 
@@ -29,10 +29,15 @@ impl Scan {
 }
 
 /// Read a scan's bytes (PLY, PCD sniffed from the bytes; `.bin` from the
-/// name). Throws an Error naming the file when the bytes are bad.
+/// name), given as a `Uint8Array` (or Node `Buffer`) or an `ArrayBuffer`.
+/// Throws an Error naming the file when the bytes are bad.
 #[wasm_bindgen(js_name = readScan)]
-pub fn read_scan(bytes: &[u8], name: &str) -> WasmResult<Scan> {
-    let c = io::read_scan_named(bytes, name, &ReadLimits::default())?;
+pub fn read_scan(
+    #[wasm_bindgen(unchecked_param_type = "Uint8Array | ArrayBuffer")] bytes: JsValue,
+    name: &str,
+) -> WasmResult<Scan> {
+    let bytes = bytes_from_js(&bytes, name)?;
+    let c = io::read_scan_named(&bytes, name, &ReadLimits::default())?;
     Ok(Scan {
         format: c.format.name(),
         points: c.points.into_iter().flatten().collect(),
@@ -46,16 +51,41 @@ pub struct DescribedScan {
     format: &'static str,
     pub(super) descriptor: Descriptor,
     preview: Vec<f32>,
+    /// Where the recording put the sensor (bag clouds); None for files.
+    pub(super) pose: Option<io::poses::Pose>,
+}
+
+impl DescribedScan {
+    /// Describe points already read (the one path of `describeScan`,
+    /// `describePoints` and the bags' clouds): errors name `name`.
+    pub(super) fn new(
+        name: &str,
+        format: &'static str,
+        points: &[[f32; 3]],
+        params: &DescriptorParams,
+        preview_points: Option<usize>,
+    ) -> WasmResult<DescribedScan> {
+        let descriptor = crate::describe(points, params).map_err(|e| e.in_file(name))?;
+        Ok(DescribedScan {
+            name: name.to_string(),
+            format,
+            preview: crate::cloud::decimate(points, preview_points.unwrap_or(4000)),
+            descriptor,
+            pose: None,
+        })
+    }
 }
 
 #[wasm_bindgen]
 impl DescribedScan {
-    /// The name the scan was described under (its file name).
+    /// The name it was described under (a file name, or the name given to
+    /// `describePoints`).
     #[wasm_bindgen(getter)]
     pub fn name(&self) -> String {
         self.name.clone()
     }
-    /// Format name, e.g. `ply_binary_little_endian`.
+    /// Format of the bytes read (as `Scan.format`); `points` for
+    /// `describePoints`.
     #[wasm_bindgen(getter)]
     pub fn format(&self) -> String {
         self.format.to_string()
@@ -69,6 +99,12 @@ impl DescribedScan {
     pub fn preview(&self) -> js_sys::Float32Array {
         js_sys::Float32Array::from(&self.preview[..])
     }
+    /// The sensor's pose where the recording holds one (a bag cloud with
+    /// odometry or tf: `{name, time, position, yaw}`), else `null`.
+    #[wasm_bindgen(unchecked_return_type = "Pose | null")]
+    pub fn pose(&self) -> WasmResult<JsValue> {
+        to_js(&self.pose)
+    }
     /// The descriptor as JSON text (to pass between workers or store).
     #[wasm_bindgen(js_name = descriptorJson)]
     pub fn descriptor_json(&self) -> WasmResult<String> {
@@ -76,24 +112,52 @@ impl DescribedScan {
     }
 }
 
-/// Read and describe a scan in one call. `params` is a (partial) parameter
-/// object or undefined; `previewPoints` caps the preview (e.g. 4000).
+/// Read and describe a scan in one call. `bytes` is a `Uint8Array` (or
+/// Node `Buffer`) or an `ArrayBuffer`; `params` is a (partial) parameter
+/// object or undefined; `previewPoints` caps the preview (default 4000).
 #[wasm_bindgen(js_name = describeScan)]
 pub fn describe_scan(
-    bytes: &[u8],
+    #[wasm_bindgen(unchecked_param_type = "Uint8Array | ArrayBuffer")] bytes: JsValue,
     name: &str,
-    #[wasm_bindgen(unchecked_param_type = "Partial<DescriptorParams> | undefined | null")]
-    params: JsValue,
-    preset: Option<String>,
-    #[wasm_bindgen(js_name = previewPoints)] preview_points: Option<usize>,
+    #[wasm_bindgen(unchecked_optional_param_type = "Partial<DescriptorParams> | null")]
+    params: OptionalJs,
+    #[wasm_bindgen(unchecked_optional_param_type = "string | null")] preset: Option<String>,
+    #[wasm_bindgen(js_name = previewPoints, unchecked_optional_param_type = "number | null")]
+    preview_points: Option<usize>,
 ) -> WasmResult<DescribedScan> {
-    let p = params_from_js(params, preset)?;
-    let c = io::read_scan_named(bytes, name, &ReadLimits::default())?;
-    let descriptor = crate::describe(&c.points, &p).map_err(|e| e.in_file(name))?;
-    Ok(DescribedScan {
-        name: name.to_string(),
-        format: c.format.name(),
-        preview: crate::cloud::decimate(&c.points, preview_points.unwrap_or(4000)),
-        descriptor,
-    })
+    let p = params_from_js(params.unwrap_or_default(), preset)?;
+    let bytes = bytes_from_js(&bytes, name)?;
+    let c = io::read_scan_named(&bytes, name, &ReadLimits::default())?;
+    DescribedScan::new(name, c.format.name(), &c.points, &p, preview_points)
+}
+
+/// Describe points already in memory: `xyz` holds x, y, z of each point in
+/// turn (sensor frame, metres), e.g. a `Float32Array` of 3 n numbers.
+/// `name` names the scan in the set and in errors (a length that is not a
+/// multiple of 3 throws an Error naming it). Non-finite points are dropped,
+/// as from files. `params`, `preset` and `previewPoints` as `describeScan`.
+#[wasm_bindgen(js_name = describePoints)]
+pub fn describe_points(
+    xyz: &[f32],
+    name: &str,
+    #[wasm_bindgen(unchecked_optional_param_type = "Partial<DescriptorParams> | null")]
+    params: OptionalJs,
+    #[wasm_bindgen(unchecked_optional_param_type = "string | null")] preset: Option<String>,
+    #[wasm_bindgen(js_name = previewPoints, unchecked_optional_param_type = "number | null")]
+    preview_points: Option<usize>,
+) -> WasmResult<DescribedScan> {
+    let p = params_from_js(params.unwrap_or_default(), preset)?;
+    let points = points_of(xyz).map_err(|e| e.in_file(name))?;
+    DescribedScan::new(name, "points", &points, &p, preview_points)
+}
+
+/// Flat x, y, z as points; a length that is not a multiple of 3 is an error.
+fn points_of(xyz: &[f32]) -> crate::Result<Vec<[f32; 3]>> {
+    if xyz.len() % 3 != 0 {
+        return Err(Error::InvalidParameter(format!(
+            "the points must be flat x, y, z triples, but {} numbers is not a multiple of 3",
+            xyz.len()
+        )));
+    }
+    Ok(xyz.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect())
 }

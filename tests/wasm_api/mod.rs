@@ -19,6 +19,11 @@ fn get(v: &JsValue, key: &str) -> JsValue {
     js_sys::Reflect::get(v, &key.into()).unwrap()
 }
 
+/// Bytes as JS passes them most often: a Uint8Array.
+fn u8a(bytes: &[u8]) -> JsValue {
+    js_sys::Uint8Array::from(bytes).into()
+}
+
 fn labels_of(v: &JsValue) -> Vec<i32> {
     serde_wasm_bindgen::from_value(get(v, "labels")).unwrap()
 }
@@ -34,14 +39,7 @@ fn real_set() -> (DescriptorSet, Vec<DescribedScan>) {
     let mut set = DescriptorSet::new(JsValue::UNDEFINED, Some("indoor".into())).unwrap();
     let mut scans = Vec::new();
     for (name, bytes) in PARITY_FILES {
-        let s = describe_scan(
-            bytes,
-            name,
-            JsValue::UNDEFINED,
-            Some("indoor".into()),
-            Some(2000),
-        )
-        .unwrap();
+        let s = describe_scan(u8a(bytes), name, None, Some("indoor".into()), Some(2000)).unwrap();
         set.add(&s).unwrap();
         scans.push(s);
     }
@@ -100,7 +98,7 @@ fn simulated_demo_model_round_trip_and_classify() {
         let bytes: Vec<u8> = js_sys::Uint8Array::new(&get(&s, "bytes")).to_vec();
         let name = get(&s, "name").as_string().unwrap();
         truth.push(get(&s, "label").as_string().unwrap());
-        let d = describe_scan(&bytes, &name, JsValue::UNDEFINED, None, None).unwrap();
+        let d = describe_scan(u8a(&bytes), &name, None, None, None).unwrap();
         set.add_json(&d.descriptor_json().unwrap()).unwrap();
         scans.push(d);
     }
@@ -155,9 +153,9 @@ fn simulated_demo_model_round_trip_and_classify() {
 fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable() {
     let e = message(
         describe_scan(
-            b"ply\nformat ascii 1.0\nelement vertex 3\n",
+            u8a(b"ply\nformat ascii 1.0\nelement vertex 3\n"),
             "bad.ply",
-            JsValue::UNDEFINED,
+            None,
             None,
             None,
         )
@@ -166,7 +164,7 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     );
     assert!(e.contains("bad.ply") && e.contains("end_header"), "{e}");
     let e = message(
-        describe_scan(&[1, 2, 3], "odd.bin", JsValue::UNDEFINED, None, None)
+        describe_scan(u8a(&[1, 2, 3]), "odd.bin", None, None, None)
             .err()
             .unwrap(),
     );
@@ -182,9 +180,9 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     // A descriptor of the outdoor preset's shape (5 ranges) into an indoor
     // set (7), and one whose counts are cut short.
     let outdoor = describe_scan(
-        PARITY_FILES[0].1,
+        u8a(PARITY_FILES[0].1),
         "o.bin",
-        JsValue::UNDEFINED,
+        None,
         Some("outdoor".into()),
         None,
     )
@@ -234,8 +232,254 @@ fn damaged_files_give_the_native_messages() {
             };
             bad_outcome(placecat::io::read_scan_named(bytes, name, &limits).map(|c| c.points.len()))
         } else {
-            bad_outcome(read_scan(bytes, name).map(|s| s.count()).map_err(message))
+            bad_outcome(
+                read_scan(u8a(bytes), name)
+                    .map(|s| s.count())
+                    .map_err(message),
+            )
         }
     });
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// Bytes come as a Uint8Array, a view into a larger buffer, or an
+/// ArrayBuffer (what `File.arrayBuffer()` gives): the same points and the
+/// same descriptor each way. Anything else is an Error naming the file.
+#[wasm_bindgen_test]
+fn bytes_as_array_buffer_or_uint8array_read_the_same() {
+    let (name, bytes) = PARITY_FILES[0];
+    let want = placecat::io::read_scan_named(bytes, name, &Default::default())
+        .unwrap()
+        .points
+        .len();
+    assert_eq!(want, 6156, "16 bytes a point");
+    let buffer: JsValue = js_sys::Uint8Array::from(bytes).buffer().into();
+    assert!(buffer.is_instance_of::<js_sys::ArrayBuffer>());
+    // The same bytes 16 bytes into a bigger buffer, as a view.
+    let padded = js_sys::Uint8Array::new_with_length(bytes.len() as u32 + 32);
+    padded
+        .subarray(16, 16 + bytes.len() as u32)
+        .copy_from(bytes);
+    let view: JsValue = padded.subarray(16, 16 + bytes.len() as u32).into();
+    for b in [u8a(bytes), buffer.clone(), view.clone()] {
+        let s = read_scan(b, name).unwrap();
+        assert_eq!((s.count(), s.format().as_str()), (want, "kitti_bin"));
+    }
+    let json = |b: JsValue| {
+        describe_scan(b, name, None, Some("outdoor".into()), Some(0))
+            .unwrap()
+            .descriptor_json()
+            .unwrap()
+    };
+    let from_u8 = json(u8a(bytes));
+    assert_eq!(json(buffer), from_u8);
+    assert_eq!(json(view), from_u8);
+    // Not bytes: the message names the file and what came instead.
+    let e = message(
+        read_scan(JsValue::from_str("scan_000.bin"), "000094.bin")
+            .err()
+            .unwrap(),
+    );
+    assert_eq!(
+        e,
+        "000094.bin: the bytes must be a Uint8Array or an ArrayBuffer, not a string"
+    );
+    let e = message(
+        describe_scan(JsValue::UNDEFINED, "a.ply", None, None, None)
+            .err()
+            .unwrap(),
+    );
+    assert!(
+        e.starts_with("a.ply: ") && e.ends_with("not undefined"),
+        "{e}"
+    );
+    let floats: JsValue = js_sys::Float32Array::new_with_length(6).into();
+    let e = message(read_scan(floats, "pts").err().unwrap());
+    assert!(
+        e.contains("not Float32Array") && e.contains("describePoints"),
+        "{e}"
+    );
+}
+
+/// Points already in memory describe exactly as the file they came from,
+/// under the name given; a length that is not whole points is an Error
+/// naming the scan.
+#[wasm_bindgen_test]
+fn describe_points_matches_the_file_and_names_the_scan() {
+    let (name, bytes) = PARITY_FILES[3];
+    let file = describe_scan(u8a(bytes), name, None, None, Some(500)).unwrap();
+    let xyz = read_scan(u8a(bytes), name).unwrap().positions().to_vec();
+    assert_eq!(xyz.len(), 3 * 112586);
+    let mem = describe_points(&xyz, "room in memory", None, None, Some(500)).unwrap();
+    assert_eq!(mem.name(), "room in memory");
+    assert_eq!(mem.format(), "points");
+    assert_eq!(
+        mem.descriptor_json().unwrap(),
+        file.descriptor_json().unwrap()
+    );
+    assert_eq!(mem.preview().to_vec(), file.preview().to_vec());
+    let summary = mem.summary().unwrap();
+    assert_eq!(get(&summary, "points").as_f64(), Some(112586.0));
+    // In a set beside the file's: Delta 0 between them.
+    let mut set = DescriptorSet::new(JsValue::UNDEFINED, None).unwrap();
+    set.add(&file).unwrap();
+    set.add(&mem).unwrap();
+    assert_eq!(set.delta(0, 1).unwrap(), 0.0);
+    // A point moved by a metre changes the descriptor.
+    let mut moved = xyz.clone();
+    for v in moved.iter_mut().step_by(3).take(20000) {
+        *v += 1.0;
+    }
+    let other = describe_points(&moved, "moved", None, None, None).unwrap();
+    assert_ne!(
+        other.descriptor_json().unwrap(),
+        file.descriptor_json().unwrap()
+    );
+    let e = message(
+        describe_points(&xyz[..10], "ten.xyz", None, None, None)
+            .err()
+            .unwrap(),
+    );
+    assert_eq!(
+        e,
+        "ten.xyz: invalid parameter: the points must be flat x, y, z triples, \
+         but 10 numbers is not a multiple of 3"
+    );
+    let bad = js_sys::JSON::parse(r#"{"voxel_size": 0}"#).unwrap();
+    let e = message(
+        describe_points(&xyz, "room", Some(bad), None, None)
+            .err()
+            .unwrap(),
+    );
+    assert!(e.contains("voxel_size"), "{e}");
+}
+
+/// A bag's bytes served a range at a time by a JS function, as a worker
+/// serves them from `File.slice`; the ranges asked for are recorded.
+fn bag_reader(
+    bytes: &'static [u8],
+    asked: std::rc::Rc<std::cell::RefCell<Vec<(f64, f64)>>>,
+) -> js_sys::Function {
+    let read =
+        Closure::<dyn FnMut(f64, f64) -> js_sys::Uint8Array>::new(move |offset: f64, len: f64| {
+            asked.borrow_mut().push((offset, len));
+            let (o, n) = (offset as usize, len as usize);
+            js_sys::Uint8Array::from(&bytes[o..o + n])
+        });
+    read.into_js_value().unchecked_into()
+}
+
+/// The corridor bag (written by the Python `rosbags` package, see
+/// tests/data/bags/make_bags.py): its topics, then its two clouds of 2700
+/// points each described with their odometry poses and names.
+#[wasm_bindgen_test]
+fn a_bag_streams_through_a_read_function_into_described_clouds_with_poses() {
+    const BAG: &[u8] = include_bytes!("../data/bags/ros1_corridor.bag");
+    let asked = std::rc::Rc::new(std::cell::RefCell::new(Vec::new()));
+    let size = BAG.len() as f64;
+    let topics = bag_topics(size, bag_reader(BAG, asked.clone()), "ros1_corridor.bag").unwrap();
+    let topics: Vec<(String, String, u64)> = js_sys::Array::from(&topics)
+        .iter()
+        .map(|t| {
+            let s = |k| get(&t, k).as_string().unwrap();
+            (
+                s("name"),
+                s("type"),
+                get(&t, "count").as_f64().unwrap() as u64,
+            )
+        })
+        .collect();
+    assert_eq!(
+        topics,
+        [
+            ("/odom".into(), "nav_msgs/Odometry".into(), 2),
+            ("/points".into(), "sensor_msgs/PointCloud2".into(), 2)
+        ]
+    );
+    asked.borrow_mut().clear();
+    let mut clouds = BagClouds::new(
+        size,
+        bag_reader(BAG, asked.clone()),
+        "ros1_corridor.bag",
+        None,
+        None,
+        None,
+        None,
+        Some(100),
+    )
+    .unwrap();
+    assert_eq!((clouds.topic().as_str(), clouds.total()), ("/points", 2.0));
+    let mut got = Vec::new();
+    while let Some(d) = clouds.next_cloud().unwrap() {
+        let pose = d.pose().unwrap();
+        let position: Vec<f64> = serde_wasm_bindgen::from_value(get(&pose, "position")).unwrap();
+        let summary = d.summary().unwrap();
+        assert_eq!(get(&summary, "points").as_f64(), Some(2700.0));
+        assert_eq!(d.format(), "ros_bag");
+        assert!(d.preview().length() <= 300);
+        got.push((d.name(), position));
+    }
+    assert_eq!(clouds.met(), 2.0);
+    assert_eq!(
+        got,
+        [
+            (
+                "ros1_corridor.bag:/points:000000".to_string(),
+                vec![0.0, 0.0, 0.0]
+            ),
+            (
+                "ros1_corridor.bag:/points:000001".to_string(),
+                vec![0.5, 0.25, 0.0]
+            )
+        ]
+    );
+    // Read in ranges, never past the end.
+    let asked = asked.borrow();
+    assert!(!asked.is_empty());
+    assert!(
+        asked.iter().all(|&(o, n)| n > 0.0 && o + n <= size),
+        "{asked:?}"
+    );
+    // A bag with two cloud topics names them; a read function that lies is
+    // an Error naming the bag; a file that is not a bag says so.
+    const TWO: &[u8] = include_bytes!("../data/bags/two_cloud_topics.bag");
+    let e = message(
+        BagClouds::new(
+            TWO.len() as f64,
+            bag_reader(TWO, Default::default()),
+            "two.bag",
+            None,
+            None,
+            None,
+            None,
+            None,
+        )
+        .err()
+        .unwrap(),
+    );
+    assert!(e.starts_with("two.bag: ") && e.contains("/points"), "{e}");
+    let short: js_sys::Function =
+        Closure::<dyn FnMut(f64, f64) -> js_sys::Uint8Array>::new(|_: f64, _: f64| {
+            js_sys::Uint8Array::new_with_length(3)
+        })
+        .into_js_value()
+        .unchecked_into();
+    let e = message(bag_topics(size, short, "short.bag").err().unwrap());
+    assert!(
+        e.starts_with("short.bag: ") && e.contains("returned 3 bytes"),
+        "{e}"
+    );
+    let e = message(
+        bag_topics(
+            PARITY_FILES[3].1.len() as f64,
+            bag_reader(PARITY_FILES[3].1, Default::default()),
+            "room.pcd",
+        )
+        .err()
+        .unwrap(),
+    );
+    assert!(
+        e.starts_with("room.pcd: ") && e.contains("not a ROS bag"),
+        "{e}"
+    );
 }
