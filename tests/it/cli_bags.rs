@@ -2,12 +2,9 @@
 //! tests/data/bags (written by rosbags and mcap-ros2-support).
 #![cfg(not(target_arch = "wasm32"))]
 
+use crate::cli_common::placecat;
 use std::path::PathBuf;
 use std::process::Command;
-
-fn placecat() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_placecat"))
-}
 
 fn bag(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
