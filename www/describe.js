@@ -16,39 +16,79 @@ import { taskOf } from './state.js';
 /** @typedef {import('./state.js').Suggestion} Suggestion */
 
 /**
+ * Describe the inputs. A file or demo scan is one result; a bag (bag.js) is
+ * many, each sent as it is described (a partial reply), and counts in the
+ * progress as its clouds read (`total`: the topic's clouds, known once the
+ * worker opened the bag), where any other input counts one.
+ * `results[i]`: the input's scan, or a bag's scans so far (kept when the
+ * run is cancelled or the bag fails half way).
  * @param {import('./pool.js').WorkerPool} pool @param {import('./state.js').Input[]} inputs
  * @param {{params: Params, byPreset: Record<'indoor' | 'outdoor', Params> | null}} how
- * @param {{onPreset: (preset: 'indoor' | 'outdoor', params: Params) => void, onResult: (i: number, r: ScanResult) => void,
- *   onError: (i: number, e: Error) => void, onSettled: (done: number) => void}} on
- * @returns {Promise<{results: (ScanResult | undefined)[], done: number, suggestion: Suggestion | null}>}
+ * @param {{onPreset: (preset: 'indoor' | 'outdoor', params: Params) => void, onResult: (i: number, r: ScanResult, j: number) => void,
+ *   onError: (i: number, e: Error) => void, onProgress: (done: number, total: number) => void,
+ *   onBag: (i: number, info: import('./bag.js').BagInfo) => void}} on
+ * @returns {Promise<{results: (ScanResult | ScanResult[] | undefined)[], done: number, total: number, suggestion: Suggestion | null}>}
  */
 export async function describeInputs(pool, inputs, { params, byPreset }, on) {
-  /** @type {(ScanResult | undefined)[]} */
+  /** @type {(ScanResult | ScanResult[] | undefined)[]} */
   const results = new Array(inputs.length);
+  const units = inputs.map(() => 1);
+  const met = inputs.map(() => 0);
+  const sum = (/** @type {number[]} */ a) => a.reduce((x, y) => x + y, 0);
+  const progress = () => on.onProgress(sum(met), sum(units));
+  /** @param {number} i @param {import('./bagreader.js').BagPartial} p */
+  const partial = (i, p) => {
+    units[i] = Math.max(1, p.total);
+    met[i] = p.met;
+    if (p.scan) {
+      const list = /** @type {ScanResult[]} */ (results[i] ??= []);
+      list.push(p.scan);
+      on.onResult(i, p.scan, list.length - 1);
+    }
+    if (p.error) on.onError(i, new Error(p.error));
+    progress();
+  };
+  /** @type {{far: number, from: string} | null} the scan (or bag) whose far points were measured */
+  let measured = null;
+  /** @param {number} i @param {any} r */
+  const finished = (i, r) => {
+    met[i] = units[i];
+    if (r.far !== undefined) measured ??= { far: r.far, from: r.bag ? inputs[i].name : r.name };
+    if (r.bag) return on.onBag(i, r);
+    results[i] = r;
+    on.onResult(i, r, 0);
+  };
+  /** @param {number} i @param {Error} e */
+  const failed = (i, e) => {
+    met[i] = units[i];
+    on.onError(i, e);
+  };
   let first = 0;
   while (byPreset && first < inputs.length) {
+    const i = first;
     try {
-      const r = /** @type {ScanResult} */ (await pool.run({ ...taskOf(inputs[first], params), byPreset }));
+      const r = await pool.run({ ...taskOf(inputs[i], params), byPreset }, (p) => partial(i, p));
       params = byPreset[r.preset ?? 'indoor'];
       on.onPreset(r.preset ?? 'indoor', params);
-      results[first] = r;
-      on.onResult(first, r);
-      on.onSettled(++first);
+      finished(i, r);
+      first++;
+      progress();
       break;
     } catch (e) {
-      if (e.message === 'cancelled') return { results, done: first, suggestion: null };
-      on.onError(first, e);
-      on.onSettled(++first);
+      if (e.message === 'cancelled') return { results, done: sum(met), total: sum(units), suggestion: null };
+      failed(i, e);
+      first++;
+      progress();
     }
   }
   const tasks = inputs.slice(first).map((input, i) => ({ ...taskOf(input, params), probe: i === 0 && first === 0 }));
-  const rest = await pool.runAll(tasks, {
-    onResult: (i, r) => on.onResult(first + i, r),
-    onError: (i, e) => on.onError(first + i, e),
-    onSettled: (n) => on.onSettled(first + n),
+  await pool.runAll(tasks, {
+    onResult: (i, r) => finished(first + i, r),
+    onError: (i, e) => failed(first + i, e),
+    onSettled: progress,
+    onPartial: (i, p) => partial(first + i, p),
   });
-  rest.results.forEach((r, i) => (results[first + i] = r));
-  const measured = results.find((r) => r?.far !== undefined);
-  const suggestion = measured ? { preset: suggestPreset(measured.far ?? 0), far: measured.far ?? 0, from: measured.name } : null;
-  return { results, done: first + rest.done, suggestion };
+  const m = /** @type {{far: number, from: string} | null} */ (measured); // set in callbacks, which the type check does not follow
+  const suggestion = m ? { preset: suggestPreset(m.far), ...m } : null;
+  return { results, done: sum(met), total: sum(units), suggestion };
 }

@@ -1,6 +1,8 @@
 // Collecting files from inputs and drag-and-drop (folders included).
 
-export const isScan = (name) => /\.(ply|pcd|bin)$/i.test(name);
+/** A ROS bag (ROS 1 .bag, rosbag2 .mcap): one input that yields many scans (bag.js). */
+export const isBag = (name) => /\.(bag|mcap)$/i.test(name);
+export const isScan = (name) => /\.(ply|pcd|bin)$/i.test(name) || isBag(name);
 export const isTruth = (name) => /(^|\/)labels\.csv$/i.test(name);
 export const isPoses = (name) => /poses[^/]*\.(txt|csv)$/i.test(name) || /(^|\/)(trajectory|groundtruth)[^/]*\.(txt|csv)$/i.test(name);
 
@@ -58,7 +60,14 @@ export function filesFromInput(list) {
   return [...list].map((file) => ({ file, name: file.webkitRelativePath || file.name }));
 }
 
-/** A file's name without its folders. @param {string} name */
+/**
+ * A file's name without its folders. A bag cloud's name
+ * (`run.bag:/points:000012`, bag.js) keeps its topic, whose slashes are no
+ * folders: only the folders before the bag go.
+ * @param {string} name
+ */
 export function baseName(name) {
-  return name.split('/').pop() ?? name;
+  const bag = /\.(bag|mcap):/i.exec(name);
+  const end = bag ? bag.index : name.length;
+  return name.slice(name.lastIndexOf('/', end) + 1);
 }

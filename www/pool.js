@@ -1,8 +1,9 @@
 // A pool of module workers, one per core, each with its own wasm instance.
 // Tasks queue; each worker takes one at a time. A worker that dies (an
-// uncaught error, out of memory) fails only its task and is replaced.
+// uncaught error, out of memory) fails only its task and is replaced. A
+// task may send partial replies before its result (a bag's clouds, bag.js).
 
-/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void}} Job */
+/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void}} Job */
 /** @typedef {{worker: Worker, job: Job | null}} WorkerSlot */
 
 export class WorkerPool {
@@ -25,6 +26,7 @@ export class WorkerPool {
     worker.onmessage = (e) => {
       const job = slot.job;
       if (!job || e.data.id !== job.id) return;
+      if ('partial' in e.data) return job.onPartial?.(e.data.partial);
       slot.job = null;
       if (e.data.ok) job.resolve(e.data.result);
       else job.reject(new Error(e.data.error));
@@ -55,10 +57,13 @@ export class WorkerPool {
     }
   }
 
-  /** Run a task on the next free worker. @param {any} task @returns {Promise<any>} */
-  run(task) {
+  /**
+   * Run a task on the next free worker; `onPartial` gets its partial replies.
+   * @param {any} task @param {(p: any) => void} [onPartial] @returns {Promise<any>}
+   */
+  run(task, onPartial) {
     return new Promise((resolve, reject) => {
-      this.queue.push({ id: this.nextId++, task, resolve, reject });
+      this.queue.push({ id: this.nextId++, task, resolve, reject, onPartial });
       this.#pump();
     });
   }
@@ -68,12 +73,13 @@ export class WorkerPool {
    * was cancelled), `done` counts those that finished or failed. Each
    * callback is called as its task settles; a cancelled task calls none.
    * @param {any[]} tasks
-   * @param {{onResult: (i: number, r: any) => void, onError: (i: number, e: Error) => void, onSettled: (done: number) => void}} on
+   * @param {{onResult: (i: number, r: any) => void, onError: (i: number, e: Error) => void, onSettled: (done: number) => void,
+   *   onPartial?: (i: number, p: any) => void}} on
    */
-  async runAll(tasks, { onResult, onError, onSettled }) {
+  async runAll(tasks, { onResult, onError, onSettled, onPartial }) {
     const results = new Array(tasks.length);
     let done = 0;
-    await Promise.all(tasks.map((task, i) => this.run(task).then(
+    await Promise.all(tasks.map((task, i) => this.run(task, onPartial && ((p) => onPartial(i, p))).then(
       (r) => {
         results[i] = r;
         done++;

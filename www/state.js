@@ -15,8 +15,9 @@ import { siteSubsample } from './suggest.js';
 
 /** A simulated demo scene (src/sim): indoor rooms, or a route through a site.
  * @typedef {'indoor' | 'warehouse' | 'outdoor'} Scene */
-/** A scan to describe: a file, or a scan of the simulated demo.
- * @typedef {{name: string, file?: File, sim?: {scene: Scene, seed: number, scans: number, index: number}}} Input */
+/** A scan to describe: a file, a scan of the simulated demo, or a ROS bag (many scans, bag.js).
+ * @typedef {{name: string, file?: File, sim?: {scene: Scene, seed: number, scans: number, index: number},
+ *   bag?: import('./bag.js').BagChoice}} Input */
 /** A category: its label, member scans (indices) and most central member.
  * @typedef {{label: number, members: number[], medoid: number}} Category */
 /** How to cluster (the form's values).
@@ -95,7 +96,12 @@ export function demoInputs(scene, seed = 1) {
 
 /** The worker task that describes an input. @param {Input} input @param {Params} params */
 export function taskOf(input, params) {
-  return input.sim ? { type: 'simulate', ...input.sim, params } : { type: 'describe', file: input.file, name: input.name, params };
+  if (input.sim) return { type: 'simulate', ...input.sim, params };
+  if (input.bag) {
+    const { topic, every, everyMetres } = input.bag;
+    return { type: 'bag', file: input.file, name: input.name, topic, every, everyMetres, params };
+  }
+  return { type: 'describe', file: input.file, name: input.name, params };
 }
 
 /**
@@ -145,11 +151,12 @@ export function withError(s, name, message) {
 export const errorText = (e) => (e.message.startsWith(e.name) ? e.message : `${e.name}: ${e.message}`);
 
 /**
- * The run ended (done or cancelled) with these results (holes: failed or cancelled).
- * @param {State} s @param {(ScanResult | undefined)[]} results @returns {State}
+ * The run ended (done or cancelled) with these results (holes: failed or
+ * cancelled; a bag's: its scans, in recording order).
+ * @param {State} s @param {(ScanResult | ScanResult[] | undefined)[]} results @returns {State}
  */
 export function finishRun(s, results) {
-  const scans = results.filter((r) => r !== undefined).map((r) => ({ ...r, name: baseName(r.name) }));
+  const scans = results.flatMap((r) => r ?? []).map((r) => ({ ...r, name: baseName(r.name) }));
   return { ...s, running: false, scans, truth: truthOfScans(scans) ?? s.truth };
 }
 
@@ -339,6 +346,12 @@ export function truthLabels(s) {
  */
 export function posesOf(s) {
   if (s.demo) return { poses: s.scans.map((r) => r.pose), usePoses: s.demo !== 'indoor', drawSite: true, note: '' };
+  // Bag clouds carry the poses the bag recorded (odometry or tf), with headings.
+  const own = s.scans.filter((r) => r.pose).length;
+  if (own) {
+    const note = own < s.scans.length ? `poses: ${s.scans.length - own} of ${s.scans.length} scans have no pose in their bag; no map` : '';
+    return { poses: s.scans.map((r) => r.pose), usePoses: own === s.scans.length, drawSite: true, note };
+  }
   const p = s.poses;
   if (!p) return { poses: s.scans.map(() => undefined), usePoses: false, drawSite: false, note: '' };
   const byName = new Map(p.poses.filter((q) => q.name).map((q) => [baseName(q.name ?? ''), q]));

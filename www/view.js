@@ -130,8 +130,8 @@ export class View {
     $('errors-summary').textContent = `${s.errors.length} file(s) skipped`;
   }
 
-  /** Progress of a run (its clock starts at 0 done). @param {number} done @param {number} total @param {'running' | 'done' | 'cancelled'} phase */
-  progress(done, total, phase) {
+  /** Progress of a run (its clock starts at 0 done). @param {number} done @param {number} total @param {'running' | 'done' | 'cancelled'} phase @param {string} [unit] what is counted */
+  progress(done, total, phase, unit = 'scans') {
     if (done === 0 && phase === 'running') this.t0 = performance.now();
     const secs = (performance.now() - this.t0) / 1000;
     const rate = done / Math.max(secs, 1e-3);
@@ -140,7 +140,7 @@ export class View {
     $('progress').dataset.state = phase === 'running' ? 'running' : 'done';
     /** @type {HTMLProgressElement} */ (/** @type {unknown} */ ($('progress-bar'))).value = phase === 'running' ? done / total : 1;
     const end = { running: '', done: ' (done)', cancelled: ' (cancelled)' }[phase];
-    $('progress-text').textContent = `${done} / ${total} scans, ${rate.toFixed(1)} scans/s, ${left.toFixed(0)} s left${end}`;
+    $('progress-text').textContent = `${done} / ${total} ${unit}, ${rate.toFixed(1)} ${unit}/s, ${left.toFixed(0)} s left${end}`;
   }
 
   /** The sweep table, or a message. @param {import('./engine.js').SweepPoint[] | string} points */

@@ -1,14 +1,19 @@
 // One wasm instance per worker. Each task reads and describes one scan
 // (a File, so memory holds one file per worker), simulates one demo scan,
-// or classifies one scan with a model; the engine does the wasm work.
+// or classifies one scan with a model; the engine does the wasm work. A
+// ROS bag is read in slices and its clouds posted one at a time as partial
+// replies (bagreader.js).
 import init, * as wasm from './pkg/placecat.js';
 import { Describer } from './engine.js';
+import { bagTopics, describeBag } from './bagreader.js';
 
 const ready = init().then(() => new Describer(wasm));
 
-/** @param {any} task */
-async function run(task) {
+/** @param {any} task @param {(p: any, transfer: Transferable[]) => void} partial */
+async function run(task, partial) {
   const describer = await ready;
+  if (task.type === 'bag') return describeBag(wasm, task, partial);
+  if (task.type === 'bagTopics') return bagTopics(wasm, task.file, task.name);
   if (task.type === 'describe') {
     const bytes = new Uint8Array(await task.file.arrayBuffer());
     if (task.byPreset) return describer.describeSuggesting(bytes, task.name, task.byPreset, task.previewPoints);
@@ -24,8 +29,8 @@ async function run(task) {
 self.onmessage = async (e) => {
   const { id, task } = e.data;
   try {
-    const r = await run(task);
-    const transfer = 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
+    const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }));
+    const transfer = r && 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
     self.postMessage({ id, ok: true, result: r }, { transfer });
   } catch (err) {
     self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });

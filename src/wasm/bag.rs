@@ -103,7 +103,9 @@ impl BagClouds {
     /// is the cloud topic (by default the only PointCloud2 topic; with
     /// several, an Error lists them); `every` keeps every Nth cloud (1, the
     /// default, keeps all). `params`, `preset` and `previewPoints` as
-    /// `describeScan`.
+    /// `describeScan`. `everyMetres` keeps one cloud every so many metres
+    /// along the recorded path instead (as the CLI's `--every-metres`; an
+    /// Error when the bag has no odometry or tf to give the path).
     #[allow(clippy::too_many_arguments)]
     #[wasm_bindgen(constructor)]
     pub fn new(
@@ -120,11 +122,14 @@ impl BagClouds {
         #[wasm_bindgen(unchecked_optional_param_type = "string | null")] preset: Option<String>,
         #[wasm_bindgen(js_name = previewPoints, unchecked_optional_param_type = "number | null")]
         preview_points: Option<usize>,
+        #[wasm_bindgen(js_name = everyMetres, unchecked_optional_param_type = "number | null")]
+        every_metres: Option<f64>,
     ) -> WasmResult<BagClouds> {
         let params = params_from_js(params.unwrap_or_default(), preset)?;
         let opts = BagOptions {
             topic,
             every: every.unwrap_or(1),
+            every_metres,
             ..Default::default()
         };
         Ok(BagClouds {

@@ -406,6 +406,7 @@ fn a_bag_streams_through_a_read_function_into_described_clouds_with_poses() {
         None,
         None,
         Some(100),
+        None,
     )
     .unwrap();
     assert_eq!((clouds.topic().as_str(), clouds.total()), ("/points", 2.0));
@@ -433,6 +434,29 @@ fn a_bag_streams_through_a_read_function_into_described_clouds_with_poses() {
             )
         ]
     );
+    // One cloud a metre: the second cloud is 0.56 m on, so it goes (as
+    // `--every-metres 1` in the CLI); half a metre keeps both.
+    let kept = |metres: f64| {
+        let mut c = BagClouds::new(
+            size,
+            bag_reader(BAG, Default::default()),
+            "ros1_corridor.bag",
+            None,
+            None,
+            None,
+            None,
+            Some(10),
+            Some(metres),
+        )
+        .unwrap();
+        let mut names = Vec::new();
+        while let Some(d) = c.next_cloud().unwrap() {
+            names.push(d.name());
+        }
+        names
+    };
+    assert_eq!(kept(1.0), ["ros1_corridor.bag:/points:000000"]);
+    assert_eq!(kept(0.5).len(), 2);
     // Read in ranges, never past the end.
     let asked = asked.borrow();
     assert!(!asked.is_empty());
@@ -448,6 +472,7 @@ fn a_bag_streams_through_a_read_function_into_described_clouds_with_poses() {
             TWO.len() as f64,
             bag_reader(TWO, Default::default()),
             "two.bag",
+            None,
             None,
             None,
             None,

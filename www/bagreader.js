@@ -1,0 +1,107 @@
+// The worker's side of a ROS bag (bag.js is the page's): the bag is read in
+// slices of its File (FileReaderSync over File.slice), never whole, and
+// each kept cloud is described and posted as it comes, so progress moves
+// and memory holds one cloud (and one chunk of the bag) at a time. Like
+// engine.js, every wasm object made here is freed here.
+import { scoped } from './engine.js';
+import { rangeShare, siteSubsample, suggestPreset } from './suggest.js';
+
+/** @typedef {typeof import('./pkg/placecat.js')} Wasm */
+/** @typedef {import('./engine.js').Params} Params */
+/** @typedef {import('./engine.js').ScanResult} ScanResult */
+/**
+ * A bag to describe: the cloud topic (none: the bag's only one), and the
+ * thinning: every Nth cloud, or one every so many metres along the path.
+ * @typedef {{file: File, name: string, topic?: string, every?: number, everyMetres?: number,
+ *   params: Params, byPreset?: Record<'indoor' | 'outdoor', Params>, previewPoints?: number}} BagTask
+ */
+/** A partial reply: a described cloud or one that failed, and how far the reading is.
+ * @typedef {{scan?: ScanResult, error?: string, met: number, total: number}} BagPartial */
+
+/**
+ * `read(offset, length)` over a File, as BagClouds and bagTopics take it.
+ * @param {File} file
+ */
+export function sliceReader(file) {
+  // Workers only (the page's type check knows the DOM, not the worker's globals).
+  const reader = new (/** @type {any} */ (self).FileReaderSync)();
+  return (/** @type {number} */ offset, /** @type {number} */ length) => reader.readAsArrayBuffer(file.slice(offset, offset + length));
+}
+
+/** The bag's topics (only its index or summary is read). @param {Wasm} wasm @param {File} file @param {string} name */
+export function bagTopics(wasm, file, name) {
+  return wasm.bagTopics(file.size, sliceReader(file), name);
+}
+
+/** @param {Wasm} wasm @param {BagTask} t @param {Params} params */
+function open(wasm, t, params) {
+  return new wasm.BagClouds(t.file.size, sliceReader(t.file), t.name, t.topic, t.every, params, undefined, t.previewPoints ?? 3000, t.everyMetres);
+}
+
+/** A described cloud as plain data. @param {import('./pkg/placecat.js').DescribedScan} scan @returns {ScanResult} */
+function resultOf(scan) {
+  const preview = scan.preview();
+  return {
+    name: scan.name, format: scan.format, descriptorJson: scan.descriptorJson(), summary: scan.summary(),
+    preview, site: siteSubsample(preview), pose: scan.pose() ?? undefined,
+  };
+}
+
+/** The next cloud, undefined after the last; throws for a cloud that cannot be read. @param {import('./pkg/placecat.js').BagClouds} clouds */
+const nextOf = (clouds) => {
+  const scan = clouds.next();
+  return scan ? scoped(scan, resultOf) : undefined;
+};
+
+/**
+ * Describe the kept clouds of a bag, posting each (or its error) as a
+ * partial reply. With `byPreset` (the first input of a new data set), the
+ * first cloud read decides the preset by its share of far points (its
+ * preview's), as a file does (describe.js); when that is not indoor the
+ * bag is opened again with the chosen preset and its clouds read again from
+ * the first, whose errors are not posted twice. Returns what the page shows
+ * of the bag. A bag that cannot be opened throws (its message names it).
+ * @param {Wasm} wasm @param {BagTask} t @param {(p: BagPartial, transfer: Transferable[]) => void} post
+ */
+export function describeBag(wasm, t, post) {
+  let clouds = open(wasm, t, t.byPreset?.indoor ?? t.params);
+  /** @type {{preset?: 'indoor' | 'outdoor', far?: number}} */
+  const chosen = {};
+  let kept = 0, failed = 0, tries = 0;
+  try {
+    const progress = () => ({ met: clouds.met, total: clouds.total });
+    for (;;) {
+      /** @type {ScanResult | undefined} */
+      let scan;
+      try {
+        scan = nextOf(clouds);
+      } catch (e) {
+        // The reader goes on after a bad cloud; this only guards against one that would not.
+        if (++failed > clouds.total + 100) throw e;
+        post({ error: String(/** @type {any} */ (e)?.message ?? e), ...progress() }, []);
+        continue;
+      }
+      tries++;
+      if (!scan) break;
+      if (t.byPreset && chosen.preset === undefined) {
+        chosen.far = rangeShare(scan.preview).far;
+        chosen.preset = suggestPreset(chosen.far);
+        if (chosen.preset !== 'indoor') {
+          clouds.free();
+          clouds = open(wasm, t, t.byPreset[chosen.preset]);
+          // Read again up to this cloud; the errors before it were posted.
+          for (let skip = failed + tries - 1; skip > 0; skip--) {
+            try { clouds.next()?.free(); } catch { /* posted on the first pass */ }
+          }
+          scan = nextOf(clouds);
+          if (!scan) break;
+        }
+      }
+      kept++;
+      post({ scan, ...progress() }, [scan.preview.buffer, ...(scan.site ? [scan.site.buffer] : [])]);
+    }
+    return { bag: true, topic: clouds.topic, kept, failed, total: clouds.total, ...chosen };
+  } finally {
+    clouds.free();
+  }
+}
