@@ -2,13 +2,11 @@
 //! `placecat describe` (each cloud of the chosen topic is one scan, named
 //! `BAGNAME:TOPIC:INDEX`).
 
-use super::describe::{DescribedFile, DescriptorsFile, FileError};
+use super::describe::{DescribedFile, DescriptorsFile, FileError, ScanPose};
 use super::names::Input;
 use super::progress;
 use placecat::descriptor::DescriptorParams;
 use placecat::io::bag::{topics_path, BagOptions, BagReader, PoseSource};
-use placecat::io::csv;
-use placecat::io::poses::Pose;
 use placecat::io::ReadLimits;
 use placecat::Result;
 use rayon::prelude::*;
@@ -54,8 +52,9 @@ pub struct BagArgs {
     /// Bags: read no poses.
     #[arg(long)]
     pub no_poses: bool,
-    /// Bags: write the clouds' poses (name,x,y,z CSV, the form the map
-    /// reads) to this file.
+    /// Bags and E57 surveys: write the poses of the described clouds and
+    /// stations (name,x,y,z CSV, the form the map reads) to this file.
+    /// OUT.json holds them too, as each scan's `pose`.
     #[arg(long, value_name = "FILE")]
     pub poses_out: Option<PathBuf>,
 }
@@ -78,14 +77,35 @@ impl BagArgs {
     }
 }
 
-/// True for the names `describe` reads as bags.
+/// True for the names `describe` reads as bags (and `.db3`, which it
+/// refuses with [`unsupported`]: so a rosbag2 folder of SQLite storage is
+/// said to be one, not passed over as holding no scans).
 pub fn is_bag(path: &Path) -> bool {
     let name = path.to_string_lossy().to_ascii_lowercase();
-    name.ends_with(".bag") || name.ends_with(".mcap")
+    name.ends_with(".bag") || name.ends_with(".mcap") || name.ends_with(".db3")
+}
+
+/// Why a bag cannot be read before it is opened: rosbag2's SQLite storage.
+/// A rosbag2 folder (metadata.yaml and its storage files) is read through
+/// its `.mcap` files, which a folder walk finds; `.db3` files would need
+/// SQLite, which placecat does not carry.
+fn unsupported(path: &Path) -> Option<placecat::Error> {
+    let name = path.to_string_lossy();
+    name.to_ascii_lowercase().ends_with(".db3").then(|| {
+        placecat::Error::Bag(
+            "rosbag2 SQLite storage (.db3) is not read, only MCAP: convert the bag \
+             (`ros2 bag convert` with storage_id: mcap) and give the .mcap or its folder"
+                .into(),
+        )
+        .in_file(name.as_ref())
+    })
 }
 
 /// `placecat topics BAG`: one line per topic (name, type, count), or JSON.
 pub fn topics(bag: &Path, json: bool) -> Result<ExitCode> {
+    if let Some(e) = unsupported(bag) {
+        return Err(e);
+    }
     let list = topics_path(bag)?;
     let text = if json {
         serde_json::to_string_pretty(&list)? + "\n"
@@ -118,11 +138,14 @@ pub fn describe(
     set: &mut DescriptorsFile,
 ) -> Result<()> {
     let opts = args.options(limits);
-    let mut poses = Vec::new();
     for input in bags {
         let bag = input.path.as_path();
         let shown = bag.display().to_string();
-        let mut reader = match BagReader::open_path(bag, opts.clone()) {
+        let opened = match unsupported(bag) {
+            Some(e) => Err(e),
+            None => BagReader::open_path(bag, opts.clone()),
+        };
+        let mut reader = match opened {
             Ok(r) => r,
             Err(e) => {
                 eprintln!("skipped {e}");
@@ -161,7 +184,6 @@ pub fn describe(
                     p.name = Some(scan.name.clone());
                 }
             }
-            poses.extend(batch.iter().filter_map(|s| s.pose.clone()));
             let params: &DescriptorParams = &set.params;
             let described: Vec<_> = batch
                 .into_par_iter()
@@ -171,6 +193,7 @@ pub fn describe(
                             name: scan.name.clone(),
                             path: shown.clone(),
                             descriptor,
+                            pose: scan.pose.as_ref().map(ScanPose::from),
                         })
                         .map_err(|e| FileError {
                             file: shown.clone(),
@@ -191,20 +214,5 @@ pub fn describe(
         }
         bar.finish_and_clear();
     }
-    if let Some(out) = &args.poses_out {
-        super::write_out(Some(out), &poses_csv(&poses))?;
-        eprintln!("{} poses -> {}", poses.len(), super::shown(out));
-    }
     Ok(())
-}
-
-/// name,x,y,z rows with a header (the CSV form of `io::poses`).
-fn poses_csv(poses: &[Pose]) -> String {
-    let mut s = String::from("name,x,y,z\n");
-    for p in poses {
-        let [x, y, z] = p.position.map(|v| v.to_string());
-        s += &csv::record([p.name.as_deref().unwrap_or(""), &x, &y, &z]);
-        s.push('\n');
-    }
-    s
 }

@@ -6,7 +6,8 @@ use super::progress;
 use placecat::collection::merge_params;
 use placecat::descriptor::DescriptorParams;
 use placecat::io::csv::quote;
-use placecat::io::{e57, read_path_at, ReadLimits};
+use placecat::io::poses::Pose;
+use placecat::io::{csv, e57, read_path_at, ReadLimits};
 use placecat::{Collection, Descriptor, Error, Result};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -19,6 +20,31 @@ pub struct DescribedFile {
     pub name: String,
     pub path: String,
     pub descriptor: Descriptor,
+    /// Where the recording puts the scan (an E57 station's pose, a bag
+    /// cloud's from odometry or tf); absent for loose files.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pose: Option<ScanPose>,
+}
+
+/// A scan's pose in OUT.json: the sensor's position (m) and heading (yaw
+/// about z, radians) in the recording's frame, and the stamp (s) of a bag
+/// cloud.
+#[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
+pub struct ScanPose {
+    pub position: [f64; 3],
+    pub yaw: f64,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub time: Option<f64>,
+}
+
+impl From<&Pose> for ScanPose {
+    fn from(p: &Pose) -> Self {
+        ScanPose {
+            position: p.position,
+            yaw: p.yaw,
+            time: p.time,
+        }
+    }
 }
 
 /// How scan files are read: the library's limits, and the sensor position
@@ -121,6 +147,11 @@ pub fn describe_inputs(
         }
     }
     super::bag::describe(&bags, bag_args, &limits.limits, &mut set)?;
+    if let Some(out) = &bag_args.poses_out {
+        let n = set.files.iter().filter(|f| f.pose.is_some()).count();
+        super::write_out(Some(out), &poses_csv(&set.files))?;
+        eprintln!("{n} poses -> {}", super::shown(out));
+    }
     let scans = set.files.len() + set.errors.len();
     let inputs = files.len() + bags.len();
     let of = if scans == inputs {
@@ -130,6 +161,20 @@ pub fn describe_inputs(
         format!("{scans} scans from {inputs} files")
     };
     Ok((set, of))
+}
+
+/// The described scans' poses (bag clouds, E57 stations) as name,x,y,z
+/// rows with a header: the CSV form of `io::poses`, which the map reads.
+fn poses_csv(files: &[DescribedFile]) -> String {
+    let mut s = String::from("name,x,y,z\n");
+    for f in files {
+        if let Some(p) = &f.pose {
+            let [x, y, z] = p.position.map(|v| v.to_string());
+            s += &csv::record([f.name.as_str(), &x, &y, &z]);
+            s.push('\n');
+        }
+    }
+    s
 }
 
 /// Read and describe files in parallel (each worker holds one file's
@@ -198,6 +243,7 @@ fn describe_path(
                 name: base,
                 path: shown.clone(),
                 descriptor,
+                pose: None,
             })
             .map_err(|e| failed(&shown, e));
         return vec![out];
@@ -218,6 +264,7 @@ fn describe_path(
                     name: format!("{base}{station}"),
                     path: scan.name.clone(),
                     descriptor,
+                    pose: scan.pose.as_ref().map(ScanPose::from),
                 })
                 .map_err(|e| failed(&scan.name, e.in_file(&scan.name))),
         );
