@@ -1,7 +1,8 @@
 // Collecting files from inputs and drag-and-drop (folders included).
 
-/** A ROS bag (ROS 1 .bag, rosbag2 .mcap): one input that yields many scans (bag.js). */
-export const isBag = (name) => /\.(bag|mcap)$/i.test(name);
+/** A ROS bag (ROS 1 .bag, rosbag2 .mcap): one input that yields many scans (bag.js).
+ * rosbag2's SQLite storage (.db3) counts too, to be refused with a message (bagreader.js). */
+export const isBag = (name) => /\.(bag|mcap|db3)$/i.test(name);
 export const isScan = (name) => /\.(ply|pcd|bin)$/i.test(name) || isBag(name);
 export const isTruth = (name) => /(^|\/)labels\.csv$/i.test(name);
 export const isPoses = (name) => /poses[^/]*\.(txt|csv)$/i.test(name) || /(^|\/)(trajectory|groundtruth)[^/]*\.(txt|csv)$/i.test(name);

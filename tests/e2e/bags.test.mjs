@@ -3,11 +3,13 @@
 // in a worker and yields its clouds as scans, named as the CLI names them,
 // thinned one a metre by default (the walk's clouds lie 0.56 m apart: 0, 2,
 // 4, 6 of 8 are kept), with the bag's odometry as the map's poses. A bag
-// with no cloud topic and one with a truncated chunk are listed with their
-// messages while the others are described.
+// with no cloud topic, one with a truncated chunk and rosbag2 SQLite
+// storage (.db3) are listed with their messages while the others are
+// described.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { start, afterRun, inkedPixels, ARTIFACTS, ROOT } from './harness.mjs';
 
@@ -16,6 +18,8 @@ const bag = (name) => join(BAGS, name);
 const kept = (b, idx) => idx.map((i) => `${b}:/points:${String(i).padStart(6, '0')}`);
 
 let h;
+/** The files of the first test, dropped again after the reload. @type {string[]} */
+let dropped = [];
 before(async () => { h = await start(); });
 after(async () => { await h?.close(); });
 
@@ -29,9 +33,12 @@ const text = (sel) => h.page.textContent(sel);
 const errors = () => h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent));
 
 test('two bags (ROS 1, rosbag2) and two damaged ones: the clouds kept a metre apart are described with their poses, the damage listed', async () => {
-  await afterRun(h.page, () => h.page.setInputFiles('#files', ['walk.bag', 'walk.mcap', 'bad_no_cloud.bag', 'bad_truncated.bag'].map(bag)));
-  // Progress counts the clouds read: 8 + 8 + 5 (truncated) + 1 (the bag that cannot be opened).
-  assert.match(await text('#progress-text'), /^22 \/ 22 clouds.*\(done\)/);
+  const db3 = join(mkdtempSync(join(tmpdir(), 'placecat-e2e-')), 'old_0.db3');
+  writeFileSync(db3, 'SQLite format 3\0');
+  dropped = [...['walk.bag', 'walk.mcap', 'bad_no_cloud.bag', 'bad_truncated.bag'].map(bag), db3];
+  await afterRun(h.page, () => h.page.setInputFiles('#files', dropped));
+  // Progress counts the clouds read: 8 + 8 + 5 (truncated) + 1 for each bag that cannot be opened.
+  assert.match(await text('#progress-text'), /^23 \/ 23 clouds.*\(done\)/);
   const names = (await exported()).map(([f]) => f);
   assert.deepEqual(names, [...kept('walk.bag', [0, 2, 4, 6]), ...kept('walk.mcap', [0, 2, 4, 6])]);
   assert.match(await text('#cluster-status'), /from 8 scans/);
@@ -41,6 +48,7 @@ test('two bags (ROS 1, rosbag2) and two damaged ones: the clouds kept a metre ap
   assert.match(note, /bad_no_cloud\.bag: not read/);
   const errs = await errors();
   assert.ok(errs.some((e) => e.startsWith('bad_no_cloud.bag: ROS bag: no sensor_msgs/PointCloud2 topic; topics: /odom')), errs.join('\n'));
+  assert.ok(errs.some((e) => e.startsWith('old_0.db3: ROS bag: rosbag2 SQLite storage (.db3) is not read, only MCAP')), errs.join('\n'));
   assert.ok(errs.some((e) => /^bad_truncated\.bag: ROS bag: topic \/points: chunk at byte \d+: lz4 chunk cannot be decompressed/.test(e)), errs.join('\n'));
   // The truncated bag's other clouds were read (too sparse for a descriptor, and said so).
   assert.ok(errs.some((e) => e.startsWith('bad_truncated.bag:/points:000004: no descriptor')), errs.join('\n'));
@@ -74,7 +82,7 @@ test('a category name given to bag clouds survives a reload and the same bags dr
   await h.page.reload();
   await h.page.waitForFunction(() => document.body.dataset.ready === 'true');
   // Names are kept per data set, the files dropped (as for scan files).
-  await afterRun(h.page, () => h.page.setInputFiles('#files', ['walk.bag', 'walk.mcap', 'bad_no_cloud.bag', 'bad_truncated.bag'].map(bag)));
+  await afterRun(h.page, () => h.page.setInputFiles('#files', dropped));
   assert.deepEqual(await exported(), before);
 });
 

@@ -21,7 +21,8 @@ test('bag types as ROS 1 and rosbag2 spell them', () => {
   assert.ok(!isCloudType('sensor_msgs/PointCloud'));
   assert.ok(isPoseType('nav_msgs/msg/Odometry') && isPoseType('tf2_msgs/TFMessage'));
   assert.ok(!isPoseType('geometry_msgs/PoseStamped'));
-  assert.ok(isBag('a/run.BAG') && isBag('x.mcap') && isScan('x.mcap') && !isBag('x.db3'));
+  // .db3 is taken as a bag to be refused with its message, not passed over.
+  assert.ok(isBag('a/run.BAG') && isBag('x.mcap') && isScan('x.mcap') && isBag('x.db3') && !isBag('metadata.yaml'));
 });
 
 test('a bag cloud keeps its topic in its name; only the folders before the bag go', () => {
