@@ -12,7 +12,7 @@ import * as S from './state.js';
 import { loadNames, saveNames, datasetId } from './store.js';
 import { beginSession, saveScan, lastSession } from './session.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
-import { chooseBagReading, rethinned, showBags } from './bag.js';
+import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 
 /** @typedef {import('./state.js').State} State */
 let state = S.initialState();
@@ -51,6 +51,7 @@ async function loadFiles(list) {
   const names = scans.map((s) => baseName(s.name));
   if (state.running) pool.cancel(); // a bag's topics are listed in the pool, before the run
   const inputs = await chooseBagReading(pool, scans.map((s, i) => ({ name: names[i], file: s.file })));
+  if (!inputs) return; // files dropped again while a bag's topic was asked for
   const run = { datasetId: datasetId(names), demo: null, inputs };
   // The data suggest indoor or outdoor unless the user chose another preset or edited the parameters.
   const own = !['indoor', 'outdoor'].includes(preset()) || $('advanced').value !== JSON.stringify(engine.presetParams(preset()), null, 1);
@@ -106,25 +107,21 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   const total = inputs.length;
   // A bag counts its clouds read; any other input counts one.
   const unit = inputs.some((i) => i.bag) ? 'clouds' : 'scans';
-  /** @type {import('./bag.js').BagInfo[]} */
-  const bags = [];
   view.progress(0, total, 'running', unit);
   /** @type {Promise<unknown> | null} the session starts once the preset is known */
   let session = null;
   const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
-  const described = await describeInputs(pool, inputs, { params, byPreset }, {
+  const { results, done, total: all, suggestion, bags } = await describeInputs(pool, inputs, { params, byPreset }, {
     onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
     // A bag's jth cloud is stored at i + j / 1e7: after input i, before i + 1, in order.
     onResult: (i, r, j) => current() && (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScan(datasetId, i + j / 1e7, r)),
     onError: (i, e) => current() && addError(inputs[i].name, e.message),
     onProgress: (n, all) => current() && view.progress(n, all, 'running', unit),
-    onBag: (i, info) => (bags[i] = info),
   });
-  const { results, done, suggestion } = described;
   if (!current()) return;
   if (suggestion) state = S.withSuggestion(state, suggestion);
   state = S.finishRun(state, results);
-  view.progress(done, described.total, done < described.total ? 'cancelled' : 'done', unit);
+  view.progress(done, all, done < all ? 'cancelled' : 'done', unit);
   if (unit === 'clouds') showBags(inputs, bags);
   buildSet();
   // Finished runs, for scripts that drive the page (and the e2e tests).
@@ -241,9 +238,7 @@ async function main() {
   dropZone($('drop'), loadFiles);
   on('preset', 'change', () => { showPreset(); if (state.inputs.length) describeAll(); });
   on('apply-advanced', 'click', () => state.inputs.length && describeAll());
-  const rethin = () => state.inputs.some((i) => i.bag) && describeAll({ ...state, inputs: rethinned(state.inputs) });
-  on('bag-thin', 'change', rethin);
-  on('bag-step', 'change', rethin);
+  onThinning(() => state.inputs.some((i) => i.bag) && describeAll({ ...state, inputs: rethinned(state.inputs) }));
   on('method', 'change', () => { view.showMethod(); cluster(); });
   for (const id of ['hk-seed', 'k', 'seeding', 'km-seed', 'eps', 'minpts']) on(id, 'change', cluster);
   on('threshold', 'change', () => cutTree({ threshold: Math.max(0, Number($('threshold').value) || 0) }, 'threshold'));

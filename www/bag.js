@@ -54,20 +54,33 @@ function ordinal(n) {
   return `${n}${suffix}`;
 }
 
+/** Call `fn` when the user changes the thinning. @param {() => void} fn */
+export function onThinning(fn) {
+  for (const id of ['bag-thin', 'bag-step']) $(id).addEventListener('change', fn);
+}
+
 /** The thinning form's values. */
 function thinningForm() {
   const mode = /** @type {'auto' | 'metres' | 'every'} */ ($('bag-thin').value);
   return { mode, step: Number($('bag-step').value) };
 }
 
+/** Counts the calls of chooseBagReading: files dropped again supersede a question not yet answered. */
+let generation = 0;
+/** @type {AbortController | null} the pending question's */
+let asking = null;
+
 /**
  * The inputs with each bag's reading chosen: its topics listed in a worker,
  * the user asked for the cloud topic when there are several, the thinning
  * from the form. A bag whose topics cannot be listed keeps the defaults:
- * its run then fails with the message naming it.
- * @template {BagInput} I @param {import('./pool.js').WorkerPool} pool @param {I[]} inputs @returns {Promise<I[]>}
+ * its run then fails with the message naming it. Null when files were
+ * dropped again before the user chose a topic (the newer drop goes on).
+ * @template {BagInput} I @param {import('./pool.js').WorkerPool} pool @param {I[]} inputs @returns {Promise<I[] | null>}
  */
 export async function chooseBagReading(pool, inputs) {
+  const mine = ++generation;
+  asking?.abort();
   const { mode, step } = thinningForm();
   const out = [];
   for (const input of inputs) {
@@ -80,9 +93,11 @@ export async function chooseBagReading(pool, inputs) {
     try {
       topics = await pool.run({ type: 'bagTopics', file: input.file, name: input.name });
     } catch { /* the bag's run says why */ }
+    if (mine !== generation) return null;
     const clouds = topics.filter((t) => isCloudType(t.type));
     const hasPoses = topics.some((t) => isPoseType(t.type));
     const topic = clouds.length > 1 ? await askTopic(input.name, clouds) : undefined;
+    if (mine !== generation) return null;
     out.push({ ...input, bag: { topic, hasPoses, ...thinningOf(mode, step, hasPoses) } });
   }
   showBags(out);
@@ -97,7 +112,7 @@ export function rethinned(inputs) {
 
 /**
  * Ask which PointCloud2 topic of the bag to read, listing them.
- * @param {string} name @param {{name: string, count: number}[]} clouds @returns {Promise<string>}
+ * @param {string} name @param {{name: string, count: number}[]} clouds @returns {Promise<string | undefined>} undefined when superseded
  */
 function askTopic(name, clouds) {
   const box = $('bag-topic-box');
@@ -106,11 +121,15 @@ function askTopic(name, clouds) {
   select.replaceChildren(...clouds.map((c) => new Option(`${c.name} (${c.count} clouds)`, c.name)));
   box.hidden = false;
   select.focus();
+  const ask = (asking = new AbortController());
   return new Promise((resolve) => {
-    $('bag-topic-read').addEventListener('click', () => {
+    const done = (/** @type {string | undefined} */ topic) => {
       box.hidden = true;
-      resolve(select.value);
-    }, { once: true });
+      resolve(topic); // before the abort, whose listener comes back here with undefined
+      ask.abort();
+    };
+    $('bag-topic-read').addEventListener('click', () => done(select.value), { signal: ask.signal });
+    ask.signal.addEventListener('abort', () => done(undefined));
   });
 }
 

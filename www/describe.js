@@ -25,13 +25,15 @@ import { taskOf } from './state.js';
  * @param {import('./pool.js').WorkerPool} pool @param {import('./state.js').Input[]} inputs
  * @param {{params: Params, byPreset: Record<'indoor' | 'outdoor', Params> | null}} how
  * @param {{onPreset: (preset: 'indoor' | 'outdoor', params: Params) => void, onResult: (i: number, r: ScanResult, j: number) => void,
- *   onError: (i: number, e: Error) => void, onProgress: (done: number, total: number) => void,
- *   onBag: (i: number, info: import('./bag.js').BagInfo) => void}} on
- * @returns {Promise<{results: (ScanResult | ScanResult[] | undefined)[], done: number, total: number, suggestion: Suggestion | null}>}
+ *   onError: (i: number, e: Error) => void, onProgress: (done: number, total: number) => void}} on
+ * @returns {Promise<{results: (ScanResult | ScanResult[] | undefined)[], done: number, total: number, suggestion: Suggestion | null,
+ *   bags: (import('./bag.js').BagInfo | undefined)[]}>} `bags`: what each bag's worker said of it at the end
  */
 export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   /** @type {(ScanResult | ScanResult[] | undefined)[]} */
   const results = new Array(inputs.length);
+  /** @type {(import('./bag.js').BagInfo | undefined)[]} */
+  const bags = new Array(inputs.length);
   const units = inputs.map(() => 1);
   const met = inputs.map(() => 0);
   const sum = (/** @type {number[]} */ a) => a.reduce((x, y) => x + y, 0);
@@ -54,7 +56,7 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   const finished = (i, r) => {
     met[i] = units[i];
     if (r.far !== undefined) measured ??= { far: r.far, from: r.bag ? inputs[i].name : r.name };
-    if (r.bag) return on.onBag(i, r);
+    if (r.bag) return (bags[i] = r);
     results[i] = r;
     on.onResult(i, r, 0);
   };
@@ -75,7 +77,7 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
       progress();
       break;
     } catch (e) {
-      if (e.message === 'cancelled') return { results, done: sum(met), total: sum(units), suggestion: null };
+      if (e.message === 'cancelled') return { results, done: sum(met), total: sum(units), suggestion: null, bags };
       failed(i, e);
       first++;
       progress();
@@ -90,5 +92,5 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   });
   const m = /** @type {{far: number, from: string} | null} */ (measured); // set in callbacks, which the type check does not follow
   const suggestion = m ? { preset: suggestPreset(m.far), ...m } : null;
-  return { results, done: sum(met), total: sum(units), suggestion };
+  return { results, done: sum(met), total: sum(units), suggestion, bags };
 }

@@ -86,7 +86,13 @@ test('a category name given to bag clouds survives a reload and the same bags dr
   assert.deepEqual(await exported(), before);
 });
 
-test('a bag with two cloud topics asks which to read, listing them', async () => {
+test('a bag with two cloud topics asks which to read, listing them; files dropped meanwhile drop the question', async () => {
+  const runsBefore = Number(await h.page.evaluate(() => document.body.dataset.runs));
+  await h.page.setInputFiles('#files', [bag('two_cloud_topics.bag')]);
+  await h.page.waitForSelector('#bag-topic-box:not([hidden])');
+  await afterRun(h.page, () => h.page.setInputFiles('#files', [bag('walk.bag')]));
+  assert.equal(await h.page.isHidden('#bag-topic-box'), true);
+  assert.match(await text('#cluster-status'), /from 4 scans/);
   await h.page.setInputFiles('#files', [bag('two_cloud_topics.bag')]);
   await h.page.waitForSelector('#bag-topic-box:not([hidden])');
   assert.match(await text('#bag-topic-file'), /two_cloud_topics\.bag has 2 PointCloud2 topics/);
@@ -98,4 +104,6 @@ test('a bag with two cloud topics asks which to read, listing them', async () =>
   const errs = await errors();
   assert.ok(errs.some((e) => e.startsWith('two_cloud_topics.bag:/rear/points:000000: no descriptor')), errs.join('\n'));
   assert.match(await text('#bag-note'), /two_cloud_topics\.bag, \/rear\/points: 0 of 1 clouds kept/);
+  // The question dropped earlier never started a run of its own.
+  assert.equal(await h.page.evaluate(() => document.body.dataset.runs), String(runsBefore + 2));
 });

@@ -42,7 +42,6 @@ test('the first scan that reads picks the preset; a failed first scan passes the
     onResult: (i, r) => seen.results.push([i, r.name]),
     onError: (i, e) => seen.errors.push([i, e.message]),
     onProgress: (n, total) => seen.settled.push([n, total]),
-    onBag: () => assert.fail('no bag'),
   });
   assert.deepEqual(seen.errors, [[0, 'bad.ply: truncated']]);
   assert.deepEqual(seen.presets, [['outdoor', 'outdoor']]);
@@ -59,7 +58,7 @@ test('the first scan that reads picks the preset; a failed first scan passes the
 test('cancelled while the first scan decides: nothing more is started', async () => {
   const pool = fakePool(() => new Error('cancelled'));
   const out = await describeInputs(/** @type {any} */ (pool), inputs, { params: /** @type {any} */ ({}), byPreset }, {
-    onPreset: () => assert.fail('no preset'), onResult: () => assert.fail('no result'), onError: () => assert.fail('a cancel is no error'), onProgress: () => {}, onBag: () => {},
+    onPreset: () => assert.fail('no preset'), onResult: () => assert.fail('no result'), onError: () => assert.fail('a cancel is no error'), onProgress: () => {},
   });
   assert.equal(pool.tasks.length, 1);
   assert.deepEqual([out.done, out.suggestion], [0, null]);
@@ -68,7 +67,7 @@ test('cancelled while the first scan decides: nothing more is started', async ()
 test('without a choice to make (the demo, a preset the user chose) every task goes at once, the first one measured', async () => {
   const pool = fakePool(() => null);
   const out = await describeInputs(/** @type {any} */ (pool), inputs.slice(1), { params: /** @type {any} */ ({ preset: 'indoor' }), byPreset: null }, {
-    onPreset: () => assert.fail('no preset'), onResult: () => {}, onError: () => {}, onProgress: () => {}, onBag: () => {},
+    onPreset: () => assert.fail('no preset'), onResult: () => {}, onError: () => {}, onProgress: () => {},
   });
   assert.deepEqual(pool.tasks.map((t) => [t.probe, t.params.preset]), [[true, 'indoor'], [false, 'indoor'], [false, 'indoor']]);
   assert.equal(out.done, 3);
@@ -78,19 +77,18 @@ test('without a choice to make (the demo, a preset the user chose) every task go
 test('a bag is one input of many scans: each cloud a result as it comes, its errors said, progress in clouds read', async () => {
   const pool = fakePool();
   const mixed = [{ name: 'walk.bag', file: {}, bag: { every: 1, hasPoses: true, thinning: '' } }, ...inputs.slice(1, 3)];
-  const seen = { results: [], errors: [], progress: [], bags: [] };
+  const seen = { results: [], errors: [], progress: [] };
   const out = await describeInputs(/** @type {any} */ (pool), /** @type {any} */ (mixed), { params: /** @type {any} */ ({ preset: 'indoor' }), byPreset }, {
     onPreset: () => {},
     onResult: (i, r, j) => seen.results.push([i, j, r.name]),
     onError: (i, e) => seen.errors.push([i, e.message]),
     onProgress: (n, total) => seen.progress.push([n, total]),
-    onBag: (i, info) => seen.bags.push([i, info.kept, info.total]),
   });
   assert.equal(pool.tasks[0].type, 'bag');
   assert.equal(pool.tasks[0].every, 1);
   assert.deepEqual(seen.results.slice(0, 3), [[0, 0, 'walk.bag:/points:000000'], [0, 1, 'walk.bag:/points:000002'], [0, 2, 'walk.bag:/points:000004']]);
   assert.deepEqual(seen.errors, [[0, 'walk.bag: topic /points: cloud 1: truncated']]);
-  assert.deepEqual(seen.bags, [[0, 3, 5]]);
+  assert.deepEqual(Array.from(out.bags, (b) => b && [b.topic, b.kept, b.failed, b.total]), [['/points', 3, 1, 5], undefined, undefined]);
   // The bag decided the preset (indoor), so the files follow with it.
   assert.deepEqual(pool.tasks.slice(1).map((t) => t.params.preset), ['indoor', 'indoor']);
   assert.deepEqual(seen.progress.slice(0, 4), [[1, 7], [2, 7], [3, 7], [5, 7]]);
