@@ -17,8 +17,19 @@ import { isBag } from './files.js';
 
 /** sensor_msgs/PointCloud2 as ROS 1 and rosbag2 spell it. @param {string} type */
 export const isCloudType = (type) => /^sensor_msgs\/(msg\/)?PointCloud2$/.test(type);
+/** @param {string} type */
+const isOdometry = (type) => /^nav_msgs\/(msg\/)?Odometry$/.test(type);
+/** @param {string} type */
+const isTf = (type) => /^tf2_msgs\/(msg\/)?TFMessage$/.test(type);
 /** The types the bag reader takes poses from. @param {string} type */
-export const isPoseType = (type) => /^(nav_msgs\/(msg\/)?Odometry|tf2_msgs\/(msg\/)?TFMessage)$/.test(type);
+export const isPoseType = (type) => isOdometry(type) || isTf(type);
+
+/**
+ * Whether the bag reader finds poses by itself, as it chooses them
+ * (src/io/bag/reader.rs, choose_poses): the only odometry topic, else tf.
+ * @param {{type: string}[]} topics
+ */
+export const hasPoses = (topics) => topics.filter((t) => isOdometry(t.type)).length === 1 || topics.some((t) => isTf(t.type));
 
 /**
  * The page's default thinning, with poses: one cloud a metre. A robot
@@ -95,10 +106,10 @@ export async function chooseBagReading(pool, inputs) {
     } catch { /* the bag's run says why */ }
     if (mine !== generation) return null;
     const clouds = topics.filter((t) => isCloudType(t.type));
-    const hasPoses = topics.some((t) => isPoseType(t.type));
+    const posed = hasPoses(topics);
     const topic = clouds.length > 1 ? await askTopic(input.name, clouds) : undefined;
     if (mine !== generation) return null;
-    out.push({ ...input, bag: { topic, hasPoses, ...thinningOf(mode, step, hasPoses) } });
+    out.push({ ...input, bag: { topic, hasPoses: posed, ...thinningOf(mode, step, posed) } });
   }
   showBags(out);
   return out;

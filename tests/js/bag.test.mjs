@@ -2,7 +2,7 @@
 // in the page's state (www/state.js, www/files.js).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { thinningOf, isCloudType, isPoseType } from '../../www/bag.js';
+import { thinningOf, isCloudType, isPoseType, hasPoses } from '../../www/bag.js';
 import { baseName, isBag, isScan } from '../../www/files.js';
 import * as S from '../../www/state.js';
 
@@ -21,6 +21,10 @@ test('bag types as ROS 1 and rosbag2 spell them', () => {
   assert.ok(!isCloudType('sensor_msgs/PointCloud'));
   assert.ok(isPoseType('nav_msgs/msg/Odometry') && isPoseType('tf2_msgs/TFMessage'));
   assert.ok(!isPoseType('geometry_msgs/PoseStamped'));
+  // As the reader chooses: the only odometry topic, else tf; two odometry topics and no tf give none.
+  const t = (...types) => types.map((type) => ({ type }));
+  assert.deepEqual([t('nav_msgs/Odometry'), t('nav_msgs/Odometry', 'nav_msgs/Odometry'), t('nav_msgs/Odometry', 'nav_msgs/Odometry', 'tf2_msgs/TFMessage'), t()].map(hasPoses),
+    [true, false, true, false]);
   // .db3 is taken as a bag to be refused with its message, not passed over.
   assert.ok(isBag('a/run.BAG') && isBag('x.mcap') && isScan('x.mcap') && isBag('x.db3') && !isBag('metadata.yaml'));
 });
