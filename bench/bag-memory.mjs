@@ -1,9 +1,10 @@
 // The page's memory while a big ROS bag streams through it (issue 16: a bag
 // of gigabytes is read in slices, never whole). Not part of npm test: the
-// bag is made first, outside the repository, e.g. 1 GB:
+// bag is made first, outside the repository (rooms that every cloud can
+// be described by, 0.1 m apart, with odometry), e.g. 1 GB:
 //
 //   python3 -m venv /tmp/venv-bags && /tmp/venv-bags/bin/pip install rosbags numpy
-//   /tmp/venv-bags/bin/python tests/data/bags/make_big_bag.py /tmp/big.bag 640 100000
+//   /tmp/venv-bags/bin/python tests/data/bags/make_big_bag.py /tmp/big.bag 740 120000 --rooms
 //   bash scripts/build-www.sh && node bench/bag-memory.mjs /tmp/big.bag [/tmp/small.bag ...]
 //
 // Each bag is dropped into the page (headless Chromium, a fresh browser per
