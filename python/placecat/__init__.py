@@ -22,11 +22,13 @@ from ._placecat import (
     PlacecatError,
     Tree,
     describe,
+    describe_bytes,
     describe_file,
     evaluate,
     params,
     presets,
     read,
+    read_bytes,
 )
 
 __all__ = [
@@ -37,9 +39,11 @@ __all__ = [
     "PlacecatError",
     "Tree",
     "describe",
+    "describe_bytes",
     "describe_file",
     "evaluate",
     "params",
     "presets",
     "read",
+    "read_bytes",
 ]

@@ -26,6 +26,17 @@ def read(
 ) -> npt.NDArray[np.float32]:
     """A scan file (PLY, PCD, KITTI .bin, LAS/LAZ, E57) as (N, 3) float32."""
 
+def read_bytes(
+    data: bytes,
+    name: str,
+    *,
+    lenient: bool = False,
+    max_points: Optional[int] = None,
+    max_bytes: Optional[int] = None,
+    origin: Optional[Tuple[float, float, float]] = None,
+) -> npt.NDArray[np.float32]:
+    """read() from a file's bytes; name tells .bin files and names errors."""
+
 def presets() -> List[str]:
     """The names of the descriptor parameter presets."""
 
@@ -45,6 +56,18 @@ def describe_file(
     origin: Optional[Tuple[float, float, float]] = None,
 ) -> Descriptor:
     """Read and describe a scan file (GIL released); errors name the file."""
+
+def describe_bytes(
+    data: bytes,
+    name: str,
+    params: _Params = None,
+    *,
+    lenient: bool = False,
+    max_points: Optional[int] = None,
+    max_bytes: Optional[int] = None,
+    origin: Optional[Tuple[float, float, float]] = None,
+) -> Descriptor:
+    """Read and describe a scan from its file's bytes (GIL released)."""
 
 def evaluate(truth: Sequence[str], labels: Sequence[int]) -> Dict[str, Any]:
     """accuracy, ari, score, inliers, total, confusion."""
@@ -122,7 +145,19 @@ class Collection:
         """k, rule, scores, one_category: the CLI's default choice."""
     def dbscan(self, eps: float, min_points: int) -> npt.NDArray[np.int32]: ...
     def medoids(self, labels: _Labels) -> List[Tuple[int, int]]: ...
-    def evaluate(self, truth: Sequence[str], labels: _Labels) -> Dict[str, Any]: ...
+    def describe_bytes(
+    data: bytes,
+    name: str,
+    params: _Params = None,
+    *,
+    lenient: bool = False,
+    max_points: Optional[int] = None,
+    max_bytes: Optional[int] = None,
+    origin: Optional[Tuple[float, float, float]] = None,
+) -> Descriptor:
+    """Read and describe a scan from its file's bytes (GIL released)."""
+
+def evaluate(self, truth: Sequence[str], labels: _Labels) -> Dict[str, Any]: ...
     def build_model(self, labels: _Labels, names: Optional[_Names] = None) -> Model: ...
 
 class Model:

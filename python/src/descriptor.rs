@@ -3,7 +3,7 @@
 //! model knows them without being told again.
 
 use crate::convert::{core_err, json_err, params_from_py, to_py};
-use crate::PlacecatError;
+use crate::{PlacecatError, Scan, ScanFile};
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike2, PyArrayMethods};
 use placecat::{Descriptor, DescriptorParams};
 use pyo3::prelude::*;
@@ -172,13 +172,47 @@ fn describe_file(
     max_bytes: Option<usize>,
     origin: Option<[f64; 3]>,
 ) -> PyResult<PyDescriptor> {
+    let scan = Scan::new(ScanFile::Path(path), lenient, max_points, max_bytes, origin);
+    describe_scan(py, scan, params)
+}
+
+/// Describe a scan from the bytes of its file (e.g. read through fsspec);
+/// `name` is used to tell KITTI .bin files and to name the scan in errors.
+/// The keywords are `read`'s; the GIL is released.
+#[pyfunction]
+#[pyo3(signature = (data, name, params=None, *, lenient=false, max_points=None, max_bytes=None, origin=None))]
+#[allow(clippy::too_many_arguments)] // the keywords of read(), one by one
+fn describe_bytes(
+    py: Python<'_>,
+    data: &[u8],
+    name: &str,
+    params: Option<&Bound<'_, PyAny>>,
+    lenient: bool,
+    max_points: Option<usize>,
+    max_bytes: Option<usize>,
+    origin: Option<[f64; 3]>,
+) -> PyResult<PyDescriptor> {
+    let scan = Scan::new(
+        ScanFile::Bytes(data, name),
+        lenient,
+        max_points,
+        max_bytes,
+        origin,
+    );
+    describe_scan(py, scan, params)
+}
+
+/// Read and describe with the GIL released; errors name the file.
+fn describe_scan(
+    py: Python<'_>,
+    scan: Scan<'_>,
+    params: Option<&Bound<'_, PyAny>>,
+) -> PyResult<PyDescriptor> {
     let params = params_from_py(params)?;
-    let limits = crate::limits(lenient, max_points, max_bytes);
     let descriptor = py
         .detach(|| {
-            let shown = path.display().to_string();
-            let cloud = placecat::io::read_path_at(&path, &limits, origin)?;
-            placecat::describe(&cloud.points, &params).map_err(|e| e.in_file(shown))
+            let cloud = scan.read()?;
+            placecat::describe(&cloud.points, &params).map_err(|e| e.in_file(scan.name()))
         })
         .map_err(core_err)?;
     Ok(PyDescriptor { params, descriptor })
@@ -189,5 +223,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyDescriptor>()?;
     m.add_function(wrap_pyfunction!(describe, m)?)?;
     m.add_function(wrap_pyfunction!(describe_file, m)?)?;
+    m.add_function(wrap_pyfunction!(describe_bytes, m)?)?;
     Ok(())
 }

@@ -14,6 +14,7 @@ mod model;
 use convert::{core_err, params_from_py, to_py};
 use numpy::{PyArray1, PyArrayMethods};
 use placecat::io::ReadLimits;
+use placecat::PointCloud;
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -27,14 +28,69 @@ create_exception!(
      an invalid parameter, descriptors that do not fit together. A ValueError."
 );
 
-/// The read limits of the CLI's flags, defaults where not given.
-fn limits(lenient: bool, max_points: Option<usize>, max_bytes: Option<usize>) -> ReadLimits {
-    let d = ReadLimits::default();
-    ReadLimits {
-        max_points: max_points.unwrap_or(d.max_points),
-        max_bytes: max_bytes.unwrap_or(d.max_bytes),
-        lenient,
+/// Where a scan's bytes come from, with the CLI's read options: a path
+/// read by the core, or bytes already read (through fsspec, say) with the
+/// file's name. Reading names the file in errors either way.
+pub(crate) struct Scan<'a> {
+    pub file: ScanFile<'a>,
+    pub limits: ReadLimits,
+    pub origin: Option<[f64; 3]>,
+}
+
+/// A path, or bytes and the name they came from.
+pub(crate) enum ScanFile<'a> {
+    Path(PathBuf),
+    Bytes(&'a [u8], &'a str),
+}
+
+impl Scan<'_> {
+    /// The limits of the CLI's flags, defaults where not given.
+    pub fn new(
+        file: ScanFile<'_>,
+        lenient: bool,
+        max_points: Option<usize>,
+        max_bytes: Option<usize>,
+        origin: Option<[f64; 3]>,
+    ) -> Scan<'_> {
+        let d = ReadLimits::default();
+        let limits = ReadLimits {
+            max_points: max_points.unwrap_or(d.max_points),
+            max_bytes: max_bytes.unwrap_or(d.max_bytes),
+            lenient,
+        };
+        Scan {
+            file,
+            limits,
+            origin,
+        }
     }
+
+    /// The file's name as errors show it.
+    pub fn name(&self) -> String {
+        match &self.file {
+            ScanFile::Path(p) => p.display().to_string(),
+            ScanFile::Bytes(_, name) => name.to_string(),
+        }
+    }
+
+    /// Read the points (call with the GIL released).
+    pub fn read(&self) -> placecat::Result<PointCloud> {
+        match &self.file {
+            ScanFile::Path(p) => placecat::io::read_path_at(p, &self.limits, self.origin),
+            ScanFile::Bytes(data, name) => {
+                placecat::io::read_scan_at(data, name, &self.limits, self.origin)
+                    .map_err(|e| e.in_file(*name))
+            }
+        }
+    }
+}
+
+/// Read a scan with the GIL released, as an (N, 3) float32 array.
+fn read_points<'py>(py: Python<'py>, scan: Scan<'_>) -> PyResult<Bound<'py, PyAny>> {
+    let cloud = py.detach(|| scan.read()).map_err(core_err)?;
+    let n = cloud.points.len();
+    let flat: Vec<f32> = cloud.points.into_iter().flatten().collect();
+    Ok(PyArray1::from_vec(py, flat).reshape([n, 3])?.into_any())
 }
 
 /// Read a scan file (PLY, PCD, KITTI .bin, LAS/LAZ, single-scan E57) as an
@@ -53,13 +109,31 @@ fn read<'py>(
     max_bytes: Option<usize>,
     origin: Option<[f64; 3]>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let limits = limits(lenient, max_points, max_bytes);
-    let cloud = py
-        .detach(|| placecat::io::read_path_at(&path, &limits, origin))
-        .map_err(core_err)?;
-    let n = cloud.points.len();
-    let flat: Vec<f32> = cloud.points.into_iter().flatten().collect();
-    Ok(PyArray1::from_vec(py, flat).reshape([n, 3])?.into_any())
+    let scan = Scan::new(ScanFile::Path(path), lenient, max_points, max_bytes, origin);
+    read_points(py, scan)
+}
+
+/// [`read`] from the bytes of a scan file; `name` tells KITTI .bin files
+/// and names the scan in errors.
+#[pyfunction]
+#[pyo3(signature = (data, name, *, lenient=false, max_points=None, max_bytes=None, origin=None))]
+fn read_bytes<'py>(
+    py: Python<'py>,
+    data: &[u8],
+    name: &str,
+    lenient: bool,
+    max_points: Option<usize>,
+    max_bytes: Option<usize>,
+    origin: Option<[f64; 3]>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let scan = Scan::new(
+        ScanFile::Bytes(data, name),
+        lenient,
+        max_points,
+        max_bytes,
+        origin,
+    );
+    read_points(py, scan)
 }
 
 /// The names of the descriptor parameter presets (`indoor`, `outdoor`, ...).
@@ -94,6 +168,7 @@ fn evaluate<'py>(
 fn _placecat(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("PlacecatError", m.py().get_type::<PlacecatError>())?;
     m.add_function(wrap_pyfunction!(read, m)?)?;
+    m.add_function(wrap_pyfunction!(read_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(params, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;

@@ -100,15 +100,14 @@ impl PyModel {
         path: PathBuf,
         lenient: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let limits = crate::limits(lenient, None, None);
+        let scan = crate::Scan::new(crate::ScanFile::Path(path), lenient, None, None, None);
         let model = &self.model;
         let answer = py
             .detach(|| {
-                let name = path.display().to_string();
-                let cloud = placecat::io::read_path(&path, &limits)?;
+                let cloud = scan.read()?;
                 placecat::describe(&cloud.points, &model.params)
                     .and_then(|d| model.classify(&d))
-                    .map_err(|e| e.in_file(name))
+                    .map_err(|e| e.in_file(scan.name()))
             })
             .map_err(core_err)?;
         to_py(py, &answer)
