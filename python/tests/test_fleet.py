@@ -93,3 +93,22 @@ def test_fsspec_urls_describe_like_paths(scans):
     remote = fleet.describe_batch(["file://" + str(sim[0][0]), "file://" + str(d / "scans" / BAD)], "indoor")
     assert remote[0][1] == local[0][1] and remote[0][2] is None
     assert remote[1][1] is None and remote[1][2].startswith("file://" + str(d / "scans" / BAD) + ": PLY: ")
+
+
+def test_the_example_script_runs_and_restarts(tmp_path):
+    """python/examples/fleet.py as docs/fleet.md runs it (a LocalCluster)."""
+    import subprocess
+    import sys
+
+    sim = simulate(tmp_path / "scans", seed=44, scans=1)
+    cmd = [sys.executable, str(ROOT / "python/examples/fleet.py"), str(tmp_path / "scans"), "--out", str(tmp_path / "run"),
+           "--workers", "1", "--categories", "2", "--batch-size", "2"]
+    first = subprocess.run(cmd, capture_output=True, text=True)
+    assert first.returncode == 0, first.stderr
+    assert "described 5 of 5 files (0 already described, 0 skipped)" in first.stderr
+    assert "2 categories from 5 scans; 5 scans categorised" in first.stderr
+    assert len(fleet.read_categories(str(tmp_path / "run"))) == len(sim)
+    assert len(placecat.Model.load(tmp_path / "run" / "model.json").categories) == 2
+    again = subprocess.run(cmd + ["--describe-only"], capture_output=True, text=True)
+    assert again.returncode == 0, again.stderr
+    assert "described 0 of 5 files (5 already described, 0 skipped)" in again.stderr
