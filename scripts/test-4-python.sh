@@ -29,6 +29,11 @@ if [ ! -x "$venv/bin/python" ] || [ "$(cat "$venv/.placecat-reqs" 2>/dev/null)" 
   echo "$reqs" > "$venv/.placecat-reqs"
 fi
 
+# The Python crate is a workspace member outside default-members, so the
+# root's fmt and clippy steps do not see it: lint it here.
+cargo fmt -p placecat-python --check
+cargo clippy -p placecat-python --release --quiet -- -D warnings
+
 # The CLI every Python result is compared with (already built by
 # `cargo test --release` in npm test; then this is a no-op).
 cargo build --release --quiet --bin placecat

@@ -58,25 +58,39 @@ def describe_stage(cli: str, work: str, files: list, rounds: int) -> dict:
 
     run = os.path.join(work, "run")
     times = {"single_process_s": [], "threads_s": [], "dask_2_workers_s": [], "cli_s": []}
+    # CPU seconds, which the other sessions' load does not inflate (wall
+    # time does: a process gets a share of a core).
+    cpu = {"single_process_cpu_s": [], "dask_workers_cpu_s": [], "cli_cpu_s": []}
     out = {"files": len(files), "rounds": rounds, "load_before": load()}
     cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
     client = Client(cluster)
     for _ in range(rounds):
+        c = time.process_time()
         times["single_process_s"].append(timed(lambda: [placecat.describe_file(f) for f in files])[1])
+        cpu["single_process_cpu_s"].append(time.process_time() - c)
         with ThreadPoolExecutor(os.cpu_count()) as pool:
             times["threads_s"].append(timed(lambda: list(pool.map(placecat.describe_file, files)))[1])
         shutil.rmtree(run, ignore_errors=True)
+        before = sum(client.run(time.process_time).values())
         r, t = timed(lambda: fleet.describe(files, run, client, batch_size=64, quiet=True))
+        cpu["dask_workers_cpu_s"].append(sum(client.run(time.process_time).values()) - before)
         assert r.described == len(files), r
         times["dask_2_workers_s"].append(t)
         cmd = [cli, "describe", *files, "-o", os.path.join(work, "cli.json")]
+        c = resource.getrusage(resource.RUSAGE_CHILDREN)
         times["cli_s"].append(timed(lambda: subprocess.run(cmd, check=True, capture_output=True))[1])
+        c2 = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu["cli_cpu_s"].append(c2.ru_utime + c2.ru_stime - c.ru_utime - c.ru_stime)
     # A rerun: every file skipped (the restart cost).
     _, out["dask_rerun_s"] = timed(lambda: fleet.describe(files, run, client, batch_size=64, quiet=True))
     client.close()
     cluster.close()
     out["all_s"] = times
+    out["all_cpu_s"] = cpu
     out.update({k: min(v) for k, v in times.items()})
+    out.update({k: min(v) for k, v in cpu.items()})
+    out["per_scan_cpu_s"] = out["single_process_cpu_s"] / len(files)
+    out["dask_cpu_overhead"] = out["dask_workers_cpu_s"] / out["single_process_cpu_s"]
     single = out["single_process_s"]
     out["per_scan_core_s"] = single / len(files)
     out["dask_vs_single"] = single / out["dask_2_workers_s"]
