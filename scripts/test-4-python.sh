@@ -7,9 +7,10 @@
 #
 # The venv is made once under the target folder and reused (a stamp holds
 # the requirements it was made with); PyPI is used for installs only.
-# Run time on the 2-core dev machine: ~1 min with everything built
-# (pytest ~40 s, of which the Dask run ~15 s); the first run adds the
-# venv (~1 min) and the wheel's release build (~2-5 min).
+# Run time on the 2-core dev machine, shared with five other builds (load
+# 8 to 14): pytest 1 to 1.7 min (the Dask run ~25 s of it); with a changed
+# crate add the wheel's release build and the crate's clippy (~5-8 min
+# together at that load), and on a fresh machine the venv (~1 min).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
