@@ -46,5 +46,5 @@ rm -f "$wheels"/placecat-*.whl
 wheel=$(ls "$wheels"/placecat-*.whl)
 "$venv/bin/pip" install --quiet --force-reinstall --no-deps "$wheel"
 
-PLACECAT_CLI=$target/release/placecat PLACECAT_WHEEL=$wheel \
+PLACECAT_CLI=$target/release/placecat PLACECAT_WHEEL=$wheel PLACECAT_REQUIRE_PKG=1 \
   "$venv/bin/pytest" -q -p no:cacheprovider python/tests
