@@ -120,10 +120,13 @@ fn main() {
         .unwrap();
     }
     writeln!(out, "\nThe Delta matrix and DBSCAN grow as n^2 (every pair); hierarchical k-means++ with the matrix is dominated by the node diameters (n^2 at the root); without it, by the exact diameters of nodes of up to 1,500 scans and by 2-means. k-means grows as n k iterations. Prepared descriptors (every candidate matrix normalised and padded to whole SIMD lanes, held once) grow as n.").unwrap();
-    std::fs::write(
-        concat!(env!("CARGO_MANIFEST_DIR"), "/docs/scaling.md"),
-        &out,
-    )
-    .unwrap();
+    // The hand-written sections after this table (the Python package's
+    // fleet measurements, from python/examples/scaling.py) are kept.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/scaling.md");
+    let old = std::fs::read_to_string(path).unwrap_or_default();
+    if let Some(at) = old.find("\n## Fleet scale") {
+        out.push_str(&old[at..]);
+    }
+    std::fs::write(path, &out).unwrap();
     print!("{out}");
 }

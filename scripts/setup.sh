@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install what a fresh machine lacks, idempotently: the wasm32 target,
 # wasm-pack, a wasm-bindgen-cli matching Cargo.lock, Debian's chromium and
-# chromedriver, and the npm dev tools. Quick when everything is present.
+# chromedriver, python3 with venv, and the npm dev tools. Quick when everything is present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -37,6 +37,14 @@ if ! command -v chromium >/dev/null 2>&1 || ! command -v chromedriver >/dev/null
   SUDO=""; [ "$(id -u)" = 0 ] || SUDO="sudo"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq chromium chromium-driver >/dev/null
+fi
+
+# scripts/test-4-python.sh makes a venv (the Python package's tests).
+if ! command -v python3 >/dev/null 2>&1 || ! python3 -c 'import ensurepip, venv' >/dev/null 2>&1; then
+  say "installing Debian's python3 and python3-venv"
+  SUDO=""; [ "$(id -u)" = 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq python3 python3-venv >/dev/null
 fi
 
 if [ ! -d node_modules ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then

@@ -1,0 +1,139 @@
+"""Pickling, exceptions with the core's messages for bad files and bad
+parameters, and the GIL released while describing."""
+
+import pickle
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import placecat
+from conftest import ROOT
+
+BAD = ROOT / "tests/data/bad"
+ROOM = ROOT / "tests/data/real/pcl_room/room_scan1.pcd"
+
+
+@pytest.fixture(scope="module")
+def room():
+    return placecat.read(ROOM)
+
+
+def expected_reads():
+    rows = [l.split("\t") for l in (BAD / "expected.tsv").read_text().splitlines() if l and not l.startswith("#")]
+    return [(name, strict, lenient) for name, strict, lenient in rows]
+
+
+@pytest.mark.parametrize("name,strict,lenient", expected_reads())
+def test_bad_files_raise_the_cores_message(name, strict, lenient, monkeypatch):
+    """tests/data/bad/expected.tsv: what a user gets from each file, strict
+    and lenient; read by its bare name, the message is the same text."""
+    monkeypatch.chdir(BAD)
+    for how, want in [(False, strict), (True, lenient)]:
+        if want.endswith(" points") and want.split()[0].isdigit():
+            assert placecat.read(name, lenient=how).shape == (int(want.split()[0]), 3)
+        else:
+            with pytest.raises(placecat.PlacecatError) as e:
+                placecat.read(name, lenient=how)
+            assert str(e.value) == want
+            assert isinstance(e.value, ValueError)
+            with pytest.raises(placecat.PlacecatError, match="^" + name):
+                placecat.describe_file(name, lenient=how)
+            data = (BAD / name).read_bytes()
+            with pytest.raises(placecat.PlacecatError) as e2:
+                placecat.read_bytes(data, name, lenient=how)
+            assert str(e2.value) == want
+
+
+def test_missing_and_unknown_files_are_named(tmp_path):
+    with pytest.raises(placecat.PlacecatError, match=r"^/nonexistent/x\.pcd: I/O: "):
+        placecat.read("/nonexistent/x.pcd")
+    odd = tmp_path / "notes.txt"
+    odd.write_text("hello")
+    with pytest.raises(placecat.PlacecatError, match=r"notes\.txt: unrecognised point-cloud format"):
+        placecat.read(odd)
+    with pytest.raises(placecat.PlacecatError, match=r"^few\.bin: KITTI"):
+        placecat.read_bytes(b"12345", "few.bin")
+    with pytest.raises(placecat.PlacecatError, match="over limit"):
+        placecat.read(ROOM, max_points=10)
+
+
+def test_bad_parameters_raise(room):
+    cases = [
+        (lambda: placecat.describe(room, {"voxel_size": -2}), "invalid parameter: .*voxel_size"),
+        (lambda: placecat.describe(room, {"voxel_sise": 2}), "invalid parameter: .*voxel_sise"),
+        (lambda: placecat.describe(room, "attic"), 'unknown preset "attic"'),
+        (lambda: placecat.describe(room, 3), "preset name or a dict"),
+        (lambda: placecat.describe(room[:, :2]), r"\(N, 3\) array, got shape \[112586, 2\]"),
+        (lambda: placecat.describe(np.zeros((0, 3))), "no descriptor"),
+    ]
+    d = placecat.describe(room)
+    c = placecat.Collection([d, placecat.describe(room[::2])])
+    cases += [
+        (lambda: c.kmeans(0), "invalid parameter"),
+        (lambda: c.kmeans("many"), 'or "auto"'),
+        (lambda: c.kmeans(2, seeding="clever"), 'unknown seeding "clever"'),
+        (lambda: c.hkmeans().cut(-1.0), "threshold must be"),
+        (lambda: c.dbscan(-0.5, 2), "invalid parameter"),
+        (lambda: c.delta(0, 5), "index out of range"),
+        (lambda: c.build_model([0], {0: "a"}), "mismatch: 1 labels for 2"),
+        (lambda: c.build_model([0, 0], {"x": "a"}), "not a label number"),
+        (lambda: c.add(placecat.describe(room, "outdoor"), "o.pcd"), "o.pcd: mismatch: .*other parameters"),
+        (lambda: placecat.Collection([d], names=["a", "b"]), "2 names for 1"),
+        (lambda: placecat.Model.from_json('{"format": "x"}'), "JSON"),
+        (lambda: placecat.Descriptor.from_json("{}"), "JSON"),
+        (lambda: placecat.evaluate(["a"], [0, 1]), "mismatch|labels"),
+    ]
+    for call, pattern in cases:
+        with pytest.raises(placecat.PlacecatError, match=pattern):
+            call()
+
+
+def test_params_merge_like_the_cli():
+    assert placecat.params() == placecat.params("indoor")
+    p = placecat.params({"preset": "outdoor", "voxel_size": 2.5})
+    assert p["voxel_size"] == 2.5 and p["ranges"] == placecat.params("outdoor")["ranges"]
+    assert set(placecat.presets()) >= {"indoor", "outdoor"}
+    for name in placecat.presets():  # presets come from the core's table
+        assert placecat.params(name)["voxel_size"] > 0
+
+
+def test_descriptors_models_and_collections_pickle(room):
+    d = placecat.describe(room, "indoor")
+    d2 = pickle.loads(pickle.dumps(d))
+    assert d2 == d and d2.matrices.tolist() == d.matrices.tolist() and d2.params == d.params
+    assert d2.summary == d.summary and d.summary["points"] == len(room)
+    assert placecat.Descriptor.from_json(d.to_json()) == d
+    other = placecat.describe(room[::3])
+    assert other != d
+    c = placecat.Collection([d, other, placecat.describe(room[::2])], names=["a", "b", "c"])
+    m = c.build_model([0, 1, 1], {0: "hall", 1: "lab"})
+    m2 = pickle.loads(pickle.dumps(m))
+    assert m2 == m and m2.to_json() == m.to_json()
+    assert m2.classify(d2) == m.classify(d)
+    assert m.classify(d)["name"] == "hall"
+    assert [c_["name"] for c_ in m.renamed({1: "office"}).categories] == ["hall", "office"]
+
+
+def test_describe_releases_the_gil(room):
+    """While one thread is inside a long describe, another runs Python code:
+    with the GIL held it could not run at all until the call returned."""
+    big = np.concatenate([room] * 40)  # 4.5 million points: a long call
+    span = {}
+
+    def work():
+        span["start"] = time.perf_counter()
+        placecat.describe(big)
+        span["end"] = time.perf_counter()
+
+    ticks = []
+    t = threading.Thread(target=work)
+    t.start()
+    while t.is_alive():
+        ticks.append(time.perf_counter())
+        time.sleep(0.001)
+    t.join()
+    length = span["end"] - span["start"]
+    inside = [x for x in ticks if span["start"] + 0.1 * length < x < span["end"] - 0.1 * length]
+    assert len(inside) >= 3, (len(inside), length)

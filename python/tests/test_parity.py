@@ -1,0 +1,108 @@
+"""numpy round trips against the Rust results: the shared parity fixture
+(tests/fixtures/parity.json, also checked natively and in wasm) and the
+CLI's own outputs on the same files, to 1e-6."""
+
+import csv
+import io
+import json
+
+import numpy as np
+import pytest
+
+import placecat
+from conftest import cli_describe, run_cli
+
+
+@pytest.fixture(scope="module")
+def described(parity_files):
+    return [placecat.describe(placecat.read(f), "indoor") for f in parity_files]
+
+
+def test_read_matches_the_cli_info(parity_files):
+    for f in parity_files:
+        pts = placecat.read(f)
+        assert pts.dtype == np.float32 and pts.ndim == 2 and pts.shape[1] == 3
+        info = json.loads(run_cli("info", "--json", f).stdout)
+        assert pts.shape[0] == info["count"], f
+        first, last = np.array(info["first"]), np.array(info["last"])
+        np.testing.assert_allclose(pts[: len(first)], first, rtol=0, atol=1e-6)
+        np.testing.assert_allclose(pts[len(pts) - len(last) :], last, rtol=0, atol=1e-6)
+        # The CLI sums the finite points in float64; so does numpy here.
+        finite = pts[np.isfinite(pts).all(axis=1)].astype(np.float64)
+        assert len(finite) == info["finite"]
+        np.testing.assert_allclose(finite.sum(axis=0), info["sum"], rtol=1e-9)
+
+
+def test_labels_equal_the_parity_fixture(described, parity_fixture):
+    assert [d.total for d in described] == parity_fixture["totals"]
+    c = placecat.Collection(described)
+    for seeding, key in [("random", "kmeans_random"), ("stride", "kmeans_stride"), ("plusplus", "kmeans_plusplus")]:
+        r = c.kmeans(4, seeding=seeding, seed=3)
+        assert r["labels"].dtype == np.int32
+        assert r["labels"].tolist() == parity_fixture[key], seeding
+    assert c.hkmeans(seed=3).cut_k(4)["labels"].tolist() == parity_fixture["hkmeans_cut4"]
+    assert c.dbscan(0.5, 2).tolist() == parity_fixture["dbscan"]
+
+
+def test_descriptors_and_delta_matrix_equal_the_cli(described, parity_files, tmp_path):
+    out = cli_describe(parity_files, tmp_path / "d.json")
+    assert len(out["files"]) == len(described)
+    for f, d in zip(out["files"], described):
+        assert json.loads(d.descriptor_json()) == f["descriptor"], f["name"]
+        assert d.matrices.tolist() == [np.reshape(m, (d.rows, d.cols)).tolist() for m in f["descriptor"]["matrices"]]
+    assert json.loads(json.dumps(described[0].params)) == out["params"]
+    csv_text = run_cli("distances", tmp_path / "d.json").stdout
+    rows = list(csv.reader(io.StringIO(csv_text)))[1:]
+    want = np.array([[float(v) for v in r[1:]] for r in rows], dtype=np.float64)
+    got = placecat.Collection(described).delta_matrix()
+    assert got.dtype == np.float32 and got.shape == want.shape == (16, 16)
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-6)
+
+
+def test_default_choice_and_evaluation_equal_the_cli(described, parity_files, parity_truth, tmp_path):
+    """hkmeans with K chosen by the default rule, as `placecat cluster
+    --method hkmeans` (no --categories), and `evaluate` against a truth."""
+    cli_describe(parity_files, tmp_path / "d.json")
+    run_cli("cluster", tmp_path / "d.json", "--method", "hkmeans", "-o", tmp_path / "c.json")
+    cli = json.loads((tmp_path / "c.json").read_text())
+    c = placecat.Collection(described, names=[p.name for p in parity_files])
+    tree = c.hkmeans()
+    choice = c.choose_categories(tree)
+    assert choice["k"] == cli["categories"]
+    assert choice["rule"] == cli["choice"]["rule"]
+    np.testing.assert_allclose([s for _, s in choice["scores"]], [s for _, s in cli["choice"]["scores"]], atol=1e-9)
+    cut = tree.cut_k(choice["k"])
+    assert cut["labels"].tolist() == cli["labels"]
+    np.testing.assert_allclose(tree.linkage(), cli["tree"]["linkage"], atol=1e-6)
+    # k-means with K auto, as `--method kmeans` with no --k.
+    run_cli("cluster", tmp_path / "d.json", "--method", "kmeans", "-o", tmp_path / "k.json")
+    km_cli = json.loads((tmp_path / "k.json").read_text())
+    km = c.kmeans()
+    assert km["k"] == km_cli["k"] and km["labels"].tolist() == km_cli["labels"]
+    assert km["choice"]["rule"] == km_cli["choice"]["rule"]
+    # evaluate: the same figures as the CLI's.
+    truth = parity_truth
+    names = [p.name for p in parity_files]
+    (tmp_path / "truth.csv").write_text("file,label\n" + "".join(f"{n},{t}\n" for n, t in zip(names, truth)))
+    ev_cli = json.loads(run_cli("evaluate", tmp_path / "c.json", "--truth", tmp_path / "truth.csv").stdout)
+    ev = c.evaluate(truth, cut["labels"])
+    assert ev == placecat.evaluate(truth, cut["labels"].tolist())
+    for key in ("accuracy", "ari"):
+        assert abs(ev[key] - ev_cli[key]) < 1e-9, key
+
+
+def test_linkage_works_with_scipy(described):
+    from scipy.cluster import hierarchy
+
+    tree = placecat.Collection(described).hkmeans(seed=3)
+    z = tree.linkage()
+    assert z.shape == (15, 4) and z.dtype == np.float64
+    assert hierarchy.is_valid_linkage(z, throw=True)
+    assert hierarchy.is_monotonic(z)
+    dendro = hierarchy.dendrogram(z, no_plot=True)
+    assert sorted(dendro["leaves"]) == list(range(16))
+    # scipy's flat clusters at 4 are the tree's cut into 4 (as partitions).
+    flat = hierarchy.fcluster(z, 4, criterion="maxclust")
+    ours = tree.cut_k(4)["labels"]
+    pairs = {(int(a), int(b)) for a, b in zip(flat, ours)}
+    assert len(pairs) == len(set(flat)) == len(set(ours.tolist())) == 4
