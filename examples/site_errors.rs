@@ -5,6 +5,11 @@
 //! disc, and what k-means and nearest neighbour say.
 //!
 //!     cargo run --release --example site_errors -- [seed ...]   (default: 1 2 3)
+//!     cargo run --release --example site_errors -- warehouse [seed ...]
+//!
+//! The second form: how far apart the warehouse's kinds are under Delta
+//! (mean silhouette of the true labels, of halls vs airlock, and of
+//! k-means' own labels; mean Delta within and between kinds).
 //!
 //! Development seeds only (docs/seeds.md).
 
@@ -63,16 +68,113 @@ struct Row {
     nn: String,
 }
 
+/// Mean silhouette (Rousseeuw 1987) of `labels` under the matrix m.
+fn silhouette(m: &DistanceMatrix, labels: &[String]) -> f64 {
+    let n = labels.len();
+    let mut kinds: Vec<&String> = labels.iter().collect();
+    kinds.sort();
+    kinds.dedup();
+    let mut total = 0.0;
+    for i in 0..n {
+        let mean_to = |k: &String| {
+            let (mut s, mut c) = (0.0, 0);
+            for j in (0..n).filter(|&j| j != i && &labels[j] == k) {
+                s += m.get(i, j) as f64;
+                c += 1;
+            }
+            (c > 0).then(|| s / c as f64)
+        };
+        let Some(a) = mean_to(&labels[i]) else {
+            continue;
+        };
+        let b = kinds
+            .iter()
+            .filter(|k| ***k != labels[i])
+            .filter_map(|k| mean_to(k))
+            .fold(f64::INFINITY, f64::min);
+        total += (b - a) / a.max(b);
+    }
+    total / n as f64
+}
+
+fn mean_deltas(m: &DistanceMatrix, truth: &[String], kinds: &[&str]) {
+    for a in kinds {
+        let mut line = format!("  Delta {a:12}");
+        for b in kinds {
+            let (mut s, mut c) = (0.0, 0);
+            for i in 0..truth.len() {
+                for j in 0..truth.len() {
+                    if i != j && truth[i] == *a && truth[j] == *b {
+                        s += m.get(i, j) as f64;
+                        c += 1;
+                    }
+                }
+            }
+            line += &format!(" {:7.3}", s / c as f64);
+        }
+        println!("{line}");
+    }
+}
+
+fn warehouse(seeds: &[u64]) {
+    use placecat::sim::sites::WAREHOUSE_KINDS;
+    for &seed in seeds {
+        let run = sites::run_site(SceneKind::Warehouse, seed);
+        let space = Space::new(
+            &run.descriptors,
+            DistanceOptions::from(&DescriptorParams::indoor()),
+        )
+        .unwrap();
+        let m = space.matrix();
+        let coarse: Vec<String> = run
+            .truth
+            .iter()
+            .map(|t| {
+                if t.ends_with("_hall") {
+                    "hall".into()
+                } else {
+                    t.clone()
+                }
+            })
+            .collect();
+        let own: Vec<String> = run.stride_labels.iter().map(|l| l.to_string()).collect();
+        let n = run.truth.len();
+        let nn = (0..n)
+            .filter(|&i| {
+                let j = (0..n)
+                    .filter(|&j| j.abs_diff(i) > 25)
+                    .min_by(|&x, &y| m.get(i, x).total_cmp(&m.get(i, y)))
+                    .unwrap();
+                run.truth[i] == run.truth[j]
+            })
+            .count();
+        println!(
+            "warehouse seed {seed}: silhouette of the 3 true kinds {:.3}, halls vs airlock {:.3}, stride k-means' own 3 categories {:.3}; stride accuracy {:.1} %; 1-NN (>25 scans away) {:.1} %",
+            silhouette(&m, &run.truth),
+            silhouette(&m, &coarse),
+            silhouette(&m, &own),
+            100.0 * run.stride.accuracy,
+            100.0 * nn as f64 / n as f64
+        );
+        mean_deltas(&m, &run.truth, &WAREHOUSE_KINDS);
+    }
+}
+
 fn main() {
-    let seeds: Vec<u64> = std::env::args()
-        .skip(1)
-        .map(|s| s.parse().expect("a seed"))
-        .collect();
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let warehouse_mode = args.first().is_some_and(|a| a == "warehouse");
+    if warehouse_mode {
+        args.remove(0);
+    }
+    let seeds: Vec<u64> = args.iter().map(|s| s.parse().expect("a seed")).collect();
     let seeds = if seeds.is_empty() {
         vec![1, 2, 3]
     } else {
         seeds
     };
+    if warehouse_mode {
+        return warehouse(&seeds);
+    }
     for seed in seeds {
         let run = sites::run_site(SceneKind::Outdoor, seed);
         let site = outdoor(&mut rng::rng(seed));
@@ -182,22 +284,6 @@ fn main() {
             "  1-NN (>25 scans away) {:.1} %",
             100.0 * nn_ok as f64 / n as f64
         );
-        // Mean Delta within and between kinds.
-        for a in OUTDOOR_KINDS {
-            let mut line = format!("  Delta {a:12}");
-            for b in OUTDOOR_KINDS {
-                let (mut s, mut c) = (0.0, 0);
-                for i in 0..n {
-                    for j in 0..n {
-                        if i != j && run.truth[i] == a && run.truth[j] == b {
-                            s += m.get(i, j) as f64;
-                            c += 1;
-                        }
-                    }
-                }
-                line += &format!(" {:7.3}", s / c as f64);
-            }
-            println!("{line}");
-        }
+        mean_deltas(&m, &run.truth, &OUTDOOR_KINDS);
     }
 }
