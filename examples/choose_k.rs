@@ -6,7 +6,9 @@
 //!
 //! `--seeds dev`: simulator seeds 1, 2, 3 (the rule was developed on these);
 //! `--seeds test`: 101 to 105, indoor also 11 to 20 (run once, to report;
-//! docs/seeds.md). Clustering seeds 0..9. Indoor: N scans per kind (default
+//! docs/seeds.md). `--seeds round2`: the outdoor site as changed in issue
+//! 14's second round, each seed on its own row: development seeds 1 to 3
+//! and the second round's test seeds 201 to 205 (run once); no real files. Clustering seeds 0..9. Indoor: N scans per kind (default
 //! 10, two rooms of five); warehouse and outdoor: `--scans` along the
 //! trajectory (default: the simulator's own count). Writes a markdown
 //! table to stdout and, given a path, to that file.
@@ -267,13 +269,18 @@ fn real_sets() -> Vec<Set> {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut test = false;
+    let mut round2 = false;
     let mut per_kind = 10;
     let mut scans: Option<usize> = None;
     let mut path = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
-            "--seeds" => test = it.next().map(|s| s == "test").unwrap_or(false),
+            "--seeds" => {
+                let which = it.next().map(String::as_str);
+                test = which == Some("test");
+                round2 = which == Some("round2");
+            }
             "--indoor-per-kind" => {
                 per_kind = it.next().and_then(|s| s.parse().ok()).expect("a number")
             }
@@ -288,6 +295,9 @@ fn main() {
     };
     let clustering: Vec<u64> = (0..10).collect();
     let start = std::time::Instant::now();
+    if round2 {
+        return round_two(&clustering, scans, path, start);
+    }
     let mut sets = Vec::new();
     for (label, scene, buildings, preset) in [
         (
@@ -350,6 +360,38 @@ fn main() {
         &real_sets(),
         &clustering,
     );
+    writeln!(out, "\n(took {:.0} s)", start.elapsed().as_secs_f64()).unwrap();
+    print!("{out}");
+    if let Some(p) = path {
+        std::fs::write(&p, &out).unwrap_or_else(|e| panic!("{p}: {e}"));
+    }
+}
+
+/// `--seeds round2`: the changed outdoor site, one row per seed.
+fn round_two(
+    clustering: &[u64],
+    scans: Option<usize>,
+    path: Option<String>,
+    start: std::time::Instant,
+) {
+    let mut sets = Vec::new();
+    for (group, seeds) in [("development", 1..=3), ("test", 201..=205)] {
+        for seed in seeds {
+            let mut sp = SimParams::new(SceneKind::Outdoor, seed);
+            if let Some(n) = scans {
+                sp.scans = n;
+            }
+            eprintln!(
+                "outdoor seed {seed} ({:.0} s)",
+                start.elapsed().as_secs_f64()
+            );
+            let name = format!("outdoor, {group} seed {seed}");
+            sets.push(simulate(name, sp, DescriptorParams::outdoor()));
+        }
+    }
+    let mut out = String::new();
+    writeln!(out, "## Choosing the number of categories: the outdoor site of issue 14's second round\n\nSimulator seeds 1 to 3 (development) and 201 to 205 (test, run once), one row per seed; clustering seeds 0 to 9 (tree: hierarchical k-means++ cut with `cut_k`; k-means: plusplus seeding). \"found\": the K chosen is 3 or 2 (plain vs forest). Accuracy and ARI at the K chosen (`eval::evaluate`).").unwrap();
+    table(&mut out, "Outdoor site (second round)", &sets, clustering);
     writeln!(out, "\n(took {:.0} s)", start.elapsed().as_secs_f64()).unwrap();
     print!("{out}");
     if let Some(p) = path {

@@ -1,6 +1,7 @@
 //! The sequence sites' seed table alone (a part of docs/experiments.md,
 //! section 4, without the rest of the report): for the development seeds
-//! 1-3 and the test seeds 101-105 fixed in docs/seeds.md,
+//! 1-3 and the test seeds fixed in docs/seeds.md (outdoor: 201-205, the
+//! second round's; warehouse: 101-105),
 //! `placecat simulate --scene outdoor|warehouse --seed S`, described with
 //! the `outdoor` / `indoor` preset, clustered into 3 by deterministic
 //! k-means and by hierarchical k-means++ (clustering seeds 0-9). Also the

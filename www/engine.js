@@ -146,7 +146,7 @@ export class Engine {
   /**
    * The first cut of the kept tree: how many categories the rule chose from
    * the data (issue 14 item 3: the core's choose_k, `silhouette_gap` by
-   * default; one category when the scans look like one place), and why.
+   * default; one category when the scans are alike under the descriptor), and why.
    * @returns {{k: number, why: string}}
    */
   suggestCategories() {

@@ -88,7 +88,7 @@ export function choiceReason({ k, rule, one_category: best }) {
   if (rule === 'silhouette_gap' && typeof best === 'number') {
     const s = best.toFixed(2);
     return k === 1
-      ? `the scans look like one place (best mean silhouette ${s}, under 0.5)`
+      ? `the scans are alike under this descriptor, no grouping stands out (best mean silhouette ${s}, under 0.5)`
       : `the gap statistic's choice (best mean silhouette ${s})`;
   }
   const name = rule.replaceAll('_', ' ');

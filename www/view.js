@@ -120,7 +120,7 @@ export class View {
   accuracy(ev) {
     $('accuracy').textContent = typeof ev === 'string'
       ? ev
-      : `Against ground truth: accuracy ${(100 * ev.accuracy).toFixed(1)} %, ARI ${ev.ari.toFixed(3)}${ev.inliers < ev.total ? `, S ${(ev.score ?? 0).toFixed(3)}` : ''}`;
+      : `Against ground truth: accuracy ${(100 * ev.accuracy).toFixed(1)} %, ARI ${ev.ari.toFixed(3)}${ev.inliers < ev.total ? `, S ${(ev.score ?? 0).toFixed(3)}` : ''}${oneForMany(ev)}`;
   }
 
   /** @param {State} s */
@@ -239,4 +239,17 @@ export function download(name, text, type) {
   a.click();
   a.remove();
   setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+/**
+ * Why a data set with several true kinds is shown as one category: the
+ * descriptor, not the rule (the warehouse demo: its halls' scans differ more
+ * along the route than hall from hall; issue 18 found the same on
+ * independent warehouse data).
+ * @param {import('./engine.js').Evaluation} ev
+ */
+function oneForMany(ev) {
+  const kinds = ev.confusion.rows.length;
+  if (ev.confusion.cluster_class.length !== 1 || kinds < 2) return '';
+  return `. ${kinds} true kinds, 1 category: under this descriptor these scans do not fall into clear groups, so no cut stands out; type ${kinds} categories to see the best split`;
 }

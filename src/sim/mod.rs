@@ -246,7 +246,7 @@ impl Simulation {
                     shots.push(Shot {
                         scene: 0,
                         pose,
-                        label: stop.kind.to_string(),
+                        label: (site.place)(stop.position).to_string(),
                     });
                 }
                 scenes_out.push(Scene {

@@ -5,12 +5,18 @@
 //!   trees, rocks, hay bales and a power line on it; a forest road leaves it
 //!   and a narrower forest path leads back. The vehicle loops over the
 //!   field, drives the road and the path, and crosses the field again.
+//!   The forest is mixed as Swedish production forest is (spruce, pine,
+//!   birch), with young spruces under the canopy: at the height a vehicle's
+//!   sensor sees (below about 2.5 m within 20 m), a spruce stand is a wall
+//!   of branches, not bare trunks.
 //! - [`warehouse`]: like ArlaWarehouse: an AGV goes round a small hall,
 //!   through an airlock, up and down the aisles of a large hall between
 //!   loaded pallet racks, and back.
 //!
 //! Sizes, counts and densities are drawn per seed from ranges typical of
-//! such places; nothing is placed to help or hinder the clustering.
+//! such places; nothing is placed to help or hinder the clustering. A scan
+//! is labelled with the place the vehicle stands in ([`Site::place`]), not
+//! with the kind of the route's leg.
 
 use super::geometry::{cuboid, Shape};
 use super::route::Route;
@@ -33,6 +39,12 @@ pub struct Site {
     pub chassis: Chassis,
     /// Relative driving speed on a kind of place.
     pub speed: fn(&str) -> f64,
+    /// The kind of place a point of the route lies in: a scan's
+    /// ground-truth label. The route's stretches change kind at waypoints,
+    /// which need not be where one place ends and the next begins (a path
+    /// leaves from the road's centre line, inside the road's clearing; the
+    /// field's edge is wavy); the label is the place the vehicle stands in.
+    pub place: Box<dyn Fn([f64; 2]) -> &'static str>,
 }
 
 /// The kinds of place of the outdoor site, its ground-truth labels.
@@ -70,12 +82,38 @@ fn part(
     });
 }
 
-/// A tree: trunk into the ground, crown of one or two spheres.
-fn tree(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64, deciduous: bool) {
-    let (h, trunk) = if deciduous {
-        (u(r, 7.0, 16.0), u(r, 0.15, 0.45))
-    } else {
-        (u(r, 10.0, 22.0), u(r, 0.1, 0.25))
+/// The kinds of tree, as they look to a sensor near the ground.
+#[derive(Clone, Copy, PartialEq)]
+enum Species {
+    /// Birch and other broadleaves: a clean trunk, the crown above head
+    /// height.
+    Broadleaf,
+    /// Pine: a clean trunk, a narrow crown from about half height.
+    Pine,
+    /// Spruce: a cone of branches, living or dead, from near the ground to
+    /// the top (they are rarely pruned in managed stands): what makes a
+    /// spruce stand a wall at sensor height.
+    Spruce,
+}
+
+impl Species {
+    /// A stem of a Swedish production forest: by the National Forest
+    /// Inventory about 40 % spruce, 40 % pine, 20 % birch and other
+    /// broadleaves.
+    fn draw(r: &mut ChaCha8Rng) -> Species {
+        match r.random::<f64>() {
+            x if x < 0.2 => Species::Broadleaf,
+            x if x < 0.6 => Species::Spruce,
+            _ => Species::Pine,
+        }
+    }
+}
+
+/// A tree: trunk into the ground and its crown.
+fn tree(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64, species: Species) {
+    let (h, trunk) = match species {
+        Species::Broadleaf => (u(r, 7.0, 16.0), u(r, 0.15, 0.45)),
+        _ => (u(r, 10.0, 22.0), u(r, 0.1, 0.25)),
     };
     out.push(Shape::Cylinder {
         centre: p,
@@ -83,26 +121,58 @@ fn tree(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64, deci
         z0: ground - 0.5,
         z1: ground + h,
     });
-    if deciduous {
-        // Crowns start above head height.
-        let cr = u(r, 2.5, 4.5).min(0.4 * h);
-        out.push(Shape::Sphere {
-            centre: [p[0], p[1], ground + h - 0.7 * cr],
-            radius: cr,
-        });
-    } else {
-        // Conifers: a narrow crown from about half height, made of two
-        // spheres stacked.
-        let cr = u(r, 1.2, 2.2);
-        out.push(Shape::Sphere {
-            centre: [p[0], p[1], ground + h * u(r, 0.5, 0.65)],
-            radius: cr,
-        });
-        out.push(Shape::Sphere {
-            centre: [p[0], p[1], ground + h * 0.85],
-            radius: 0.7 * cr,
-        });
+    match species {
+        Species::Broadleaf => {
+            // Crowns start above head height.
+            let cr = u(r, 2.5, 4.5).min(0.4 * h);
+            out.push(Shape::Sphere {
+                centre: [p[0], p[1], ground + h - 0.7 * cr],
+                radius: cr,
+            });
+        }
+        Species::Pine => {
+            // A narrow crown from about half height, made of two spheres
+            // stacked.
+            let cr = u(r, 1.2, 2.2);
+            out.push(Shape::Sphere {
+                centre: [p[0], p[1], ground + h * u(r, 0.5, 0.65)],
+                radius: cr,
+            });
+            out.push(Shape::Sphere {
+                centre: [p[0], p[1], ground + h * 0.85],
+                radius: 0.7 * cr,
+            });
+        }
+        Species::Spruce => spruce_crown(out, p, ground, u(r, 0.3, 2.0), h, u(r, 1.3, 2.3)),
     }
+}
+
+/// A spruce's cone of branches from `base` above the ground to the top
+/// `h`, `radius` wide at the bottom: spheres stacked up the cone, each as
+/// wide as the cone at its centre.
+fn spruce_crown(out: &mut Vec<Shape>, p: [f64; 2], ground: f64, base: f64, h: f64, radius: f64) {
+    let width = |z: f64| radius * (h - z) / (h - base);
+    let mut z = base + 0.8 * radius;
+    while z < h && width(z) > 0.2 {
+        let rad = width(z);
+        out.push(Shape::Sphere {
+            centre: [p[0], p[1], ground + z],
+            radius: rad,
+        });
+        z += rad.max(0.5);
+    }
+}
+
+/// A young spruce of the understorey, 1-4 m: branches to the ground.
+fn sapling(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64) {
+    let h = u(r, 1.0, 4.0);
+    out.push(Shape::Cylinder {
+        centre: p,
+        radius: 0.05,
+        z0: ground - 0.2,
+        z1: ground + h,
+    });
+    spruce_crown(out, p, ground, 0.1, h, u(r, 0.25, 0.2 + 0.25 * h));
 }
 
 /// A low sphere half in the ground (bush, boulder, heap).
@@ -257,7 +327,7 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     for _ in 0..r.random_range(4..=10) {
         let p = field_point(r, 4.0);
         if clear(p, 5.0) {
-            tree(&mut s, r, p, gz(p), true);
+            tree(&mut s, r, p, gz(p), Species::Broadleaf);
         }
     }
     for _ in 0..r.random_range(15..=35) {
@@ -337,12 +407,13 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     // path. Stand density 500-900 stems a hectare.
     let stems = u(r, 0.05, 0.09);
     let undergrowth = u(r, 0.01, 0.03);
+    let saplings = u(r, 0.02, 0.06);
     // Forest roads: 4-5 m of gravel, shoulders, ditches and cleared verges;
     // the stand begins 5-7.5 m from the centre line.
     let road_clear = u(r, 5.0, 7.5);
     let path_clear = u(r, 1.1, 1.6);
     let edge = [u(r, 0.0, TAU), u(r, 0.0, TAU)];
-    let on_field = |p: [f64; 2]| {
+    let on_field = move |p: [f64; 2]| {
         let e = 3.0 + 3.0 * (p[0] / 11.0 + edge[0]).sin() * (p[1] / 13.0 + edge[1]).cos();
         p[0] > -e && p[0] < w + e && p[1] > -e && p[1] < h + e
     };
@@ -363,9 +434,9 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     };
     for _ in 0..(area * stems) as usize {
         let p = [u(r, lo[0], hi[0]), u(r, lo[1], hi[1])];
-        let deciduous = r.random::<f64>() < 0.2;
+        let species = Species::draw(r);
         if forest(p, road_clear, path_clear) {
-            tree(&mut s, r, p, gz(p), deciduous);
+            tree(&mut s, r, p, gz(p), species);
         }
     }
     // Undergrowth, boulders and saplings; thicker along the path, where
@@ -375,6 +446,13 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
         let rad = u(r, 0.3, 1.0);
         if forest(p, road_clear - 0.5, path_clear) {
             mound(&mut s, p, gz(p), rad, u(r, 0.2, 0.5));
+        }
+    }
+    // Young spruces under the canopy, 200-600 a hectare.
+    for _ in 0..(area * saplings) as usize {
+        let p = [u(r, lo[0], hi[0]), u(r, lo[1], hi[1])];
+        if forest(p, road_clear - 0.5, path_clear + 0.3) {
+            sapling(&mut s, r, p, gz(p));
         }
     }
     let on = |kind: &str| -> Vec<usize> {
@@ -415,6 +493,7 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
             u(r, 1.0, 2.0),
         );
     }
+    let road_route = route.clone();
     Site {
         shapes: s,
         ground: Some(ground),
@@ -429,6 +508,20 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
             "forest_road" => 0.9,
             _ => 1.0,
         },
+        // On the field inside its forest edge; else in the road's clearing
+        // (gravel, shoulders, ditches, verges: up to where its stand
+        // begins), past the junction too; else on the path.
+        place: Box::new(move |p| {
+            if on_field(p) {
+                plain
+            } else if road_route.distance(p, road_clear, &[road]).is_some()
+                || spur.distance(p, road_clear, &[]).is_some()
+            {
+                road
+            } else {
+                path
+            }
+        }),
     }
 }
 
@@ -569,5 +662,11 @@ pub fn warehouse(r: &mut ChaCha8Rng) -> Site {
         },
         // AGVs slow down through doors and in the airlock.
         speed: |kind| if kind == "airlock" { 0.35 } else { 1.0 },
+        // The halls and the airlock meet at the door walls, x = 20 and 26.
+        place: Box::new(move |p| match p[0] {
+            x if x < 20.0 => small,
+            x if x < 26.0 => lock,
+            _ => large,
+        }),
     }
 }

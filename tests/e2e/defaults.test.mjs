@@ -43,7 +43,7 @@ const evaluation = async () => {
   return { accuracy: Number(m[1]) / 100, ari: Number(m[2]) };
 };
 
-test('the outdoor demo, no click but its button: a site of 300 scans, the categories the rule chose, accuracy against its truth', async () => {
+test('the outdoor demo, no click but its button: a site of 300 scans, the categories the rule chose, accuracy against its truth', async (t) => {
   await afterRun(h.page, () => h.page.click('#demo-outdoor'), 300000);
   assert.match(await text('#progress-text'), /^300 \/ 300 scans/);
   assert.match(await text('#preset-note'), /^outdoor suggested: \d+ % of the points of scan_00000\.ply lie beyond 15 m/);
@@ -56,14 +56,15 @@ test('the outdoor demo, no click but its button: a site of 300 scans, the catego
   assert.match(await text('#cluster-status'), /^3 categories from 300 scans$/);
   assert.equal(await h.page.$$eval('#legend li', (li) => li.length), 3);
   // Accuracy at these three categories. Issue 14 asks for at least 97 %;
-  // NOT met: the page shows 91.3 % (ARI 0.775), as docs/experiments.md
-  // section 4 measures natively on seed 1 (91.2 +- 0.2 % over 10 tree
-  // seeds; test seeds 101-105: 89-92 %): forest road and forest path mix
-  // (0.15 and 0.11 of their scans), the plain is clean. These floors catch
-  // a regression, not the target.
+  // not met: the page shows 96.3 % (ARI 0.898), as docs/experiments.md
+  // section 4 measures natively on seed 1 (96.4 +- 0.1 % over 10 tree
+  // seeds; second-round test seeds 201-205: 91.8-96.1 %). The errors are
+  // path scans within sight of the road junction or the field. The floors
+  // are the measured figure, to catch a regression.
   const ev = await evaluation();
-  assert.ok(ev.accuracy >= 0.9, `accuracy ${ev.accuracy} at 3 categories`);
-  assert.ok(ev.ari >= 0.75, `ARI ${ev.ari}`);
+  t.diagnostic(`outdoor demo at 3 categories: accuracy ${ev.accuracy}, ARI ${ev.ari}; ${await text('#progress-text')}`);
+  assert.ok(ev.accuracy >= 0.96, `accuracy ${ev.accuracy} at 3 categories`);
+  assert.ok(ev.ari >= 0.89, `ARI ${ev.ari}`);
   // The map is a site, not a line: the scans' points spread both ways (the
   // old strip's would be about 60 m across 350 m: a ratio near 0.17).
   const site = await siteOnMap();
@@ -99,7 +100,7 @@ test('ten scans of one place are one category, not five', async () => {
   assert.equal(await categories(), 1);
   assert.match(await text('#cluster-status'), /^1 category from 10 scans$/);
   // The rule's reason: no K from 2 on reaches a mean silhouette of 0.5.
-  assert.match(await text('#cut-note'), /^1 category: the scans look like one place \(best mean silhouette 0\.[0-4]\d, under 0\.5\)$/);
+  assert.match(await text('#cut-note'), /^1 category: the scans are alike under this descriptor, no grouping stands out \(best mean silhouette 0\.[0-4]\d, under 0\.5\)$/);
   await h.page.screenshot({ path: join(ARTIFACTS, 'one-place.png') });
 });
 
@@ -111,12 +112,17 @@ test('the warehouse demo: 300 scans of an AGV route, described with the indoor p
   assert.match(await text('#preset-note'), /^indoor suggested: \d+ % of the points of scan_00000\.ply lie beyond 15 m \(under 14 %/);
   assert.match(await text('#map-caption'), /^Trajectory map/);
   assert.ok((await siteOnMap()).pixels > 5000, 'the halls drawn');
-  // Measured: the rule says one place here (best mean silhouette 0.35 on
-  // seed 1): the halls' descriptors overlap; at 3 categories the tree
+  // Measured: the rule finds no grouping here (best mean silhouette 0.35 on
+  // seed 1; the true kinds' own mean silhouette is 0.27, and the large
+  // hall's scans differ among themselves along the route nearly as much as
+  // from the small hall's: examples/site_errors.rs warehouse); issue 18
+  // found the same on independent warehouse data. At 3 categories the tree
   // reaches 50.7 % (docs/experiments.md section 4: 59-72 % with k-means
   // on the test seeds). A change in either shows here.
   assert.equal(await categories(), 1);
-  assert.match(await text('#cut-note'), /^1 category: the scans look like one place/);
+  assert.match(await text('#cut-note'), /^1 category: the scans are alike under this descriptor/);
+  // The page says why three kinds are one category: the descriptor, not the rule.
+  assert.match(await text('#accuracy'), /\. 3 true kinds, 1 category: under this descriptor these scans do not fall into clear groups, so no cut stands out; type 3 categories to see the best split$/);
   await h.page.screenshot({ path: join(ARTIFACTS, 'demo-warehouse.png') });
 });
 

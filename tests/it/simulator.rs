@@ -58,6 +58,28 @@ fn the_outdoor_site_is_a_site_not_a_strip() {
 }
 
 #[test]
+fn outdoor_labels_are_the_places_the_vehicle_stands_in() {
+    for seed in [1, 2, 3] {
+        let sim = plan(SceneKind::Outdoor, seed);
+        let of = |kind: &str| -> Vec<usize> {
+            (0..sim.len()).filter(|&i| sim.label(i) == kind).collect()
+        };
+        let path = of(OUTDOOR_KINDS[2]);
+        // The path leaves from the road's centre line; scans still inside
+        // the road's clearing (at least 5 m from its centre line) are road.
+        let route = placecat::sim::sites::outdoor(&mut placecat::rng::rng(seed)).route;
+        for &i in &path {
+            let [x, y, _] = sim.sensor_pose(i).position;
+            let near = route.distance([x, y], 4.9, &[OUTDOOR_KINDS[1]]);
+            assert!(
+                near.is_none(),
+                "seed {seed}: path scan {i} {near:?} m from the road"
+            );
+        }
+    }
+}
+
+#[test]
 fn the_outdoor_sensor_keeps_its_height_above_the_ground_and_tilts_with_it() {
     let sim = plan(SceneKind::Outdoor, 2);
     let (mut above, mut under, mut max_pitch) = (vec![], vec![], 0f64);

@@ -181,7 +181,7 @@ test('the first cut: the rule chooses the number of categories from the data and
   // is under the rule's 0.5), not one category per scan.
   e.load(params, scans.slice(0, 3).map((s) => s.descriptorJson));
   e.hkmeans(0);
-  assert.deepEqual(e.suggestCategories(), { k: 1, why: 'the scans look like one place (best mean silhouette 0.47, under 0.5)' });
+  assert.deepEqual(e.suggestCategories(), { k: 1, why: 'the scans are alike under this descriptor, no grouping stands out (best mean silhouette 0.47, under 0.5)' });
   // The 40 scans of five kinds: the gap statistic's 3 (measured; the rule
   // under-counts the indoor kinds, docs/choose_k.md), never the old fixed 5.
   e.load(params, scans.map((s) => s.descriptorJson));

@@ -53,7 +53,7 @@ test('the default scale follows the root / median merge ratio; the log floor is 
 });
 
 test('the first cut says why: the silhouette that decided one category or more, or the rule\'s best score', () => {
-  assert.equal(choiceReason({ k: 1, rule: 'silhouette_gap', one_category: 0.384 }), 'the scans look like one place (best mean silhouette 0.38, under 0.5)');
+  assert.equal(choiceReason({ k: 1, rule: 'silhouette_gap', one_category: 0.384 }), 'the scans are alike under this descriptor, no grouping stands out (best mean silhouette 0.38, under 0.5)');
   assert.equal(choiceReason({ k: 3, rule: 'silhouette_gap', one_category: 0.71 }), "the gap statistic's choice (best mean silhouette 0.71)");
   assert.equal(choiceReason({ k: 4, rule: 'silhouette_gap' }), "the silhouette gap rule's best score");
   assert.equal(choiceReason({ k: 1, rule: 'gap' }), 'the gap rule finds no structure to split');

@@ -1,0 +1,289 @@
+//! Where on the outdoor site deterministic k-means goes wrong (issue 14,
+//! second round): for each scan, where it stands on the route (metres from
+//! the last change of kind, the turn of the route around it, the distance
+//! to a stretch of another kind), which kind covers most of its 20 m range
+//! disc, and what k-means and nearest neighbour say.
+//!
+//!     cargo run --release --example site_errors -- [seed ...]   (default: 1 2 3)
+//!     cargo run --release --example site_errors -- warehouse [seed ...]
+//!
+//! The second form: how far apart the warehouse's kinds are under Delta
+//! (mean silhouette of the true labels, of halls vs airlock, and of
+//! k-means' own labels; mean Delta within and between kinds).
+//!
+//! Development seeds only (docs/seeds.md).
+
+// Only run_site is used here.
+#[allow(dead_code)]
+#[path = "common/sites.rs"]
+mod sites;
+
+use placecat::cluster::Space;
+use placecat::sim::sites::{outdoor, OUTDOOR_KINDS};
+use placecat::sim::SceneKind;
+use placecat::*;
+
+/// The kind of each point of a 20 m disc around p: the kind of the nearest
+/// stretch of route (each kind's share of the disc, in OUTDOOR_KINDS order).
+fn disc_shares(route: &sim::route::Route, p: [f64; 2], radius: f64) -> [f64; 3] {
+    let mut count = [0usize; 3];
+    let step = 2.0;
+    let n = (radius / step) as i64;
+    for i in -n..=n {
+        for j in -n..=n {
+            let q = [p[0] + i as f64 * step, p[1] + j as f64 * step];
+            if (i * i + j * j) as f64 * step * step > radius * radius {
+                continue;
+            }
+            let mut best = (f64::INFINITY, 0);
+            for (k, kind) in OUTDOOR_KINDS.iter().enumerate() {
+                if let Some(d) = route.distance(q, 60.0, &[kind]) {
+                    if d < best.0 {
+                        best = (d, k);
+                    }
+                }
+            }
+            count[best.1] += 1;
+        }
+    }
+    let total: usize = count.iter().sum();
+    count.map(|c| c as f64 / total as f64)
+}
+
+/// One scan: where it stands and what k-means and its neighbour say.
+struct Row {
+    i: usize,
+    truth: String,
+    predicted: String,
+    /// Scans since the last change of true kind.
+    since: usize,
+    /// Distance to a stretch of route of another kind (m; 60: none nearer).
+    d_other: f64,
+    /// Turn of the route over +-10 m (degrees).
+    turn: f64,
+    /// The kind nearest to most of the 20 m disc, and each kind's share.
+    major: &'static str,
+    shares: [f64; 3],
+    /// True kind of the nearest neighbour more than 25 scans away.
+    nn: String,
+}
+
+/// Mean silhouette (Rousseeuw 1987) of `labels` under the matrix m.
+fn silhouette(m: &DistanceMatrix, labels: &[String]) -> f64 {
+    let n = labels.len();
+    let mut kinds: Vec<&String> = labels.iter().collect();
+    kinds.sort();
+    kinds.dedup();
+    let mut total = 0.0;
+    for i in 0..n {
+        let mean_to = |k: &String| {
+            let (mut s, mut c) = (0.0, 0);
+            for j in (0..n).filter(|&j| j != i && &labels[j] == k) {
+                s += m.get(i, j) as f64;
+                c += 1;
+            }
+            (c > 0).then(|| s / c as f64)
+        };
+        let Some(a) = mean_to(&labels[i]) else {
+            continue;
+        };
+        let b = kinds
+            .iter()
+            .filter(|k| ***k != labels[i])
+            .filter_map(|k| mean_to(k))
+            .fold(f64::INFINITY, f64::min);
+        total += (b - a) / a.max(b);
+    }
+    total / n as f64
+}
+
+fn mean_deltas(m: &DistanceMatrix, truth: &[String], kinds: &[&str]) {
+    for a in kinds {
+        let mut line = format!("  Delta {a:12}");
+        for b in kinds {
+            let (mut s, mut c) = (0.0, 0);
+            for i in 0..truth.len() {
+                for j in 0..truth.len() {
+                    if i != j && truth[i] == *a && truth[j] == *b {
+                        s += m.get(i, j) as f64;
+                        c += 1;
+                    }
+                }
+            }
+            line += &format!(" {:7.3}", s / c as f64);
+        }
+        println!("{line}");
+    }
+}
+
+fn warehouse(seeds: &[u64]) {
+    use placecat::sim::sites::WAREHOUSE_KINDS;
+    for &seed in seeds {
+        let run = sites::run_site(SceneKind::Warehouse, seed);
+        let space = Space::new(
+            &run.descriptors,
+            DistanceOptions::from(&DescriptorParams::indoor()),
+        )
+        .unwrap();
+        let m = space.matrix();
+        let coarse: Vec<String> = run
+            .truth
+            .iter()
+            .map(|t| {
+                if t.ends_with("_hall") {
+                    "hall".into()
+                } else {
+                    t.clone()
+                }
+            })
+            .collect();
+        let own: Vec<String> = run.stride_labels.iter().map(|l| l.to_string()).collect();
+        let n = run.truth.len();
+        let nn = (0..n)
+            .filter(|&i| {
+                let j = (0..n)
+                    .filter(|&j| j.abs_diff(i) > 25)
+                    .min_by(|&x, &y| m.get(i, x).total_cmp(&m.get(i, y)))
+                    .unwrap();
+                run.truth[i] == run.truth[j]
+            })
+            .count();
+        println!(
+            "warehouse seed {seed}: silhouette of the 3 true kinds {:.3}, halls vs airlock {:.3}, stride k-means' own 3 categories {:.3}; stride accuracy {:.1} %; 1-NN (>25 scans away) {:.1} %",
+            silhouette(&m, &run.truth),
+            silhouette(&m, &coarse),
+            silhouette(&m, &own),
+            100.0 * run.stride.accuracy,
+            100.0 * nn as f64 / n as f64
+        );
+        mean_deltas(&m, &run.truth, &WAREHOUSE_KINDS);
+    }
+}
+
+fn main() {
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let warehouse_mode = args.first().is_some_and(|a| a == "warehouse");
+    if warehouse_mode {
+        args.remove(0);
+    }
+    let seeds: Vec<u64> = args.iter().map(|s| s.parse().expect("a seed")).collect();
+    let seeds = if seeds.is_empty() {
+        vec![1, 2, 3]
+    } else {
+        seeds
+    };
+    if warehouse_mode {
+        return warehouse(&seeds);
+    }
+    for seed in seeds {
+        let run = sites::run_site(SceneKind::Outdoor, seed);
+        let site = outdoor(&mut rng::rng(seed));
+        let stops = site.route.stops(run.sim.len(), site.speed);
+        let space = Space::new(
+            &run.descriptors,
+            DistanceOptions::from(&DescriptorParams::outdoor()),
+        )
+        .unwrap();
+        let m = space.matrix();
+        let n = run.truth.len();
+        let mapped = |l: i32| {
+            run.stride
+                .confusion
+                .cluster_class
+                .iter()
+                .find(|(k, _)| *k == l)
+                .and_then(|(_, c)| c.clone())
+                .unwrap_or_default()
+        };
+        // Heading change over +-10 m of route.
+        let heading = |i: usize| stops[i].heading;
+        let per_m = run.sim.len() as f64 / site.route.length();
+        let w = (10.0 * per_m).round() as usize;
+        println!(
+            "seed {seed}: stride {:.1} %, {} scans, {:.2} scans/m",
+            100.0 * run.stride.accuracy,
+            n,
+            per_m
+        );
+        let mut since = 0usize;
+        let mut rows = vec![];
+        #[allow(clippy::needless_range_loop)] // i indexes four arrays
+        for i in 0..n {
+            if i > 0 && run.truth[i] != run.truth[i - 1] {
+                since = 0;
+            } else if i > 0 {
+                since += 1;
+            }
+            let p = stops[i].position;
+            let others: Vec<&str> = OUTDOOR_KINDS
+                .iter()
+                .copied()
+                .filter(|k| *k != run.truth[i])
+                .collect();
+            let d_other = site.route.distance(p, 60.0, &others).unwrap_or(60.0);
+            let a = heading(i.saturating_sub(w));
+            let b = heading((i + w).min(n - 1));
+            let turn = ((b - a + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+                - std::f64::consts::PI)
+                .abs()
+                .to_degrees();
+            let shares = disc_shares(&site.route, p, 20.0);
+            let major = OUTDOOR_KINDS[(0..3)
+                .max_by(|&x, &y| shares[x].total_cmp(&shares[y]))
+                .unwrap()];
+            // Nearest neighbour more than 25 scans away.
+            let nn = (0..n)
+                .filter(|&j| j.abs_diff(i) > 25)
+                .min_by(|&x, &y| m.get(i, x).total_cmp(&m.get(i, y)))
+                .unwrap();
+            let pred = mapped(run.stride_labels[i]);
+            rows.push(Row {
+                i,
+                truth: run.truth[i].clone(),
+                predicted: pred,
+                since,
+                d_other,
+                turn,
+                major,
+                shares,
+                nn: run.truth[nn].clone(),
+            });
+        }
+        // Steps from the next change of kind, too.
+        let mut until = vec![0usize; n];
+        for i in (0..n.saturating_sub(1)).rev() {
+            until[i] = if run.truth[i] != run.truth[i + 1] {
+                0
+            } else {
+                until[i + 1] + 1
+            };
+        }
+        for r in rows.iter().filter(|r| r.truth != r.predicted) {
+            println!(
+                "  {:3} {:12} -> {:12} since {:3} until {:3} d_other {:5.1} turn {:5.0} disc {:12} ({:.2}/{:.2}/{:.2}) nn25 {}",
+                r.i, r.truth, r.predicted, r.since, until[r.i], r.d_other, r.turn, r.major,
+                r.shares[0], r.shares[1], r.shares[2], r.nn
+            );
+        }
+        // Error rate by distance to a stretch of another kind, and by turn.
+        type Group = (&'static str, fn(&Row) -> bool);
+        let groups: [Group; 5] = [
+            ("d_other < 20 m", |r| r.d_other < 20.0),
+            ("d_other >= 20 m", |r| r.d_other >= 20.0),
+            ("turn > 30 deg", |r| r.turn > 30.0),
+            ("turn <= 30 deg", |r| r.turn <= 30.0),
+            ("disc majority != truth", |r| r.major != r.truth),
+        ];
+        for (name, f) in groups {
+            let sel: Vec<&Row> = rows.iter().filter(|r| f(r)).collect();
+            let wrong = sel.iter().filter(|r| r.truth != r.predicted).count();
+            println!("  {name:24} {wrong:3} wrong of {:3}", sel.len());
+        }
+        let nn_ok = rows.iter().filter(|r| r.truth == r.nn).count();
+        println!(
+            "  1-NN (>25 scans away) {:.1} %",
+            100.0 * nn_ok as f64 / n as f64
+        );
+        mean_deltas(&m, &run.truth, &OUTDOOR_KINDS);
+    }
+}
