@@ -2,6 +2,7 @@
 //! presets, plus the variants of docs/design.md#variants. One height band
 //! and the Tab. II values give exactly the paper's descriptor.
 
+use super::parts::{Part, PartKind, MAX_PARTS};
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
 
@@ -84,6 +85,26 @@ pub struct DescriptorParams {
     pub metric: Metric,
     /// Scans with fewer classified voxels are flagged unreliable.
     pub min_voxels: usize,
+    /// Weight of the NDT histogram's Delta in the distance (1 = the
+    /// paper's distance; 0 = the extra parts alone). Left out of JSON when
+    /// 1, so the paper's presets read and write as before.
+    #[serde(skip_serializing_if = "is_one")]
+    pub ndt_weight: f64,
+    /// Extra parts beside the NDT histogram, each with its weight
+    /// (descriptor::parts); empty for the paper's descriptor.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub parts: Vec<Part>,
+}
+
+fn is_one(w: &f64) -> bool {
+    *w == 1.0
+}
+
+/// Parts from (kind, weight) pairs.
+fn parts(list: &[(PartKind, f64)]) -> Vec<Part> {
+    list.iter()
+        .map(|&(kind, weight)| Part { kind, weight })
+        .collect()
 }
 
 /// A preset's constructor.
@@ -91,12 +112,55 @@ pub type Preset = fn() -> DescriptorParams;
 
 /// Every parameter preset, by name: the one list. The CLI's help names
 /// them from here; a test holds the JS `Preset` type and the README to it.
-pub const PRESETS: [(&str, Preset); 4] = [
+pub const PRESETS: [(&str, Preset); 8] = [
     ("indoor", DescriptorParams::indoor),
     ("outdoor", DescriptorParams::outdoor),
     ("indoor_bands", DescriptorParams::indoor_bands),
     ("perception_oru", DescriptorParams::perception_oru),
+    ("indoor_plus", DescriptorParams::indoor_plus),
+    ("warehouse", DescriptorParams::warehouse),
+    ("outdoor_plus", DescriptorParams::outdoor_plus),
+    ("free_space", DescriptorParams::free_space),
 ];
+
+/// One line per preset saying what it is for, in the order of [`PRESETS`]
+/// (the CLI's help, the page's menu and the wasm API show these).
+pub const PRESET_NOTES: [(&str, &str); 8] = [
+    ("indoor", "the paper's indoor parameters (Tab. II)"),
+    ("outdoor", "the paper's outdoor parameters (Tab. II)"),
+    (
+        "indoor_bands",
+        "indoor with height bands and no far ranges (docs/design.md#variants)",
+    ),
+    (
+        "perception_oru",
+        "close to the public C++ implementation, for comparison",
+    ),
+    (
+        "indoor_plus",
+        "indoor, plus the free-space slice, shape functions and ring heights: room kinds",
+    ),
+    (
+        "warehouse",
+        "indoor, plus the free-space slice and ring heights: halls of different size and height",
+    ),
+    (
+        "outdoor_plus",
+        "outdoor, plus the free-space slice and ring heights",
+    ),
+    (
+        "free_space",
+        "the free-space slice and ring heights alone, no NDT histogram: size and shape of the space only",
+    ),
+];
+
+/// The one line of [`PRESET_NOTES`] for a preset name.
+pub fn preset_note(name: &str) -> Option<&'static str> {
+    PRESET_NOTES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, t)| *t)
+}
 
 /// The names of [`PRESETS`], in order.
 pub fn preset_names() -> Vec<&'static str> {
@@ -137,6 +201,8 @@ impl DescriptorParams {
             normalisation: Normalisation::Total,
             metric: Metric::Paper,
             min_voxels: 20,
+            ndt_weight: 1.0,
+            parts: Vec::new(),
         }
     }
 
@@ -183,6 +249,52 @@ impl DescriptorParams {
                 (7.0, Some(10.0)),
             ],
             height_bands: vec![-0.8, 0.3, 1.5],
+            ..Self::indoor()
+        }
+    }
+
+    /// The paper's indoor descriptor plus the free-space slice, shape
+    /// functions and ring heights (issue 18). The weights come from the
+    /// development seeds only (docs/parts.md).
+    pub fn indoor_plus() -> Self {
+        DescriptorParams {
+            preset: "indoor_plus".into(),
+            parts: parts(&[
+                (PartKind::Slice, 5.0),
+                (PartKind::Esf, 5.0),
+                (PartKind::Ring, 5.0),
+            ]),
+            ..Self::indoor()
+        }
+    }
+
+    /// The paper's indoor descriptor plus the free-space slice and ring
+    /// heights, which see a hall's size and height (docs/parts.md).
+    pub fn warehouse() -> Self {
+        DescriptorParams {
+            preset: "warehouse".into(),
+            parts: parts(&[(PartKind::Slice, 5.0), (PartKind::Ring, 5.0)]),
+            ..Self::indoor()
+        }
+    }
+
+    /// The paper's outdoor descriptor plus the free-space slice and ring
+    /// heights (docs/parts.md).
+    pub fn outdoor_plus() -> Self {
+        DescriptorParams {
+            preset: "outdoor_plus".into(),
+            parts: parts(&[(PartKind::Slice, 5.0), (PartKind::Ring, 5.0)]),
+            ..Self::outdoor()
+        }
+    }
+
+    /// The free-space slice and ring heights alone: the NDT histogram is
+    /// still made (and checked) but weighs nothing (docs/parts.md).
+    pub fn free_space() -> Self {
+        DescriptorParams {
+            preset: "free_space".into(),
+            ndt_weight: 0.0,
+            parts: parts(&[(PartKind::Slice, 10.0), (PartKind::Ring, 10.0)]),
             ..Self::indoor()
         }
     }
@@ -285,7 +397,47 @@ impl DescriptorParams {
                 "classes x height bands x ranges make {cells} cells per matrix (at most {MAX_CELLS})"
             ));
         }
+        self.validate_weights()
+    }
+
+    /// The weights of the NDT histogram and of the parts: finite, not
+    /// negative, not all zero, each kind of part at most once.
+    fn validate_weights(&self) -> Result<()> {
+        if !(self.ndt_weight.is_finite() && self.ndt_weight >= 0.0) {
+            return invalid(format!(
+                "ndt_weight must be finite and >= 0, got {}",
+                self.ndt_weight
+            ));
+        }
+        if self.parts.len() > MAX_PARTS {
+            return invalid(format!(
+                "at most {MAX_PARTS} parts, got {}",
+                self.parts.len()
+            ));
+        }
+        for (i, p) in self.parts.iter().enumerate() {
+            if !(p.weight.is_finite() && p.weight >= 0.0) {
+                return invalid(format!(
+                    "the weight of part {:?} must be finite and >= 0, got {}",
+                    p.kind, p.weight
+                ));
+            }
+            if self.parts[..i].iter().any(|q| q.kind == p.kind) {
+                return invalid(format!("part {:?} is given twice", p.kind));
+            }
+        }
+        if self.ndt_weight == 0.0 && self.parts.iter().all(|p| p.weight == 0.0) {
+            return invalid("ndt_weight and every part's weight are 0: nothing to compare");
+        }
         Ok(())
+    }
+
+    /// The weight of a kind of part (0 when the parameters have none).
+    pub fn part_weight(&self, kind: PartKind) -> f64 {
+        self.parts
+            .iter()
+            .find(|p| p.kind == kind)
+            .map_or(0.0, |p| p.weight)
     }
 }
 
@@ -309,6 +461,8 @@ mod tests {
         assert!(include_str!("../wasm.rs").contains(&ts), "{ts}");
         let md = format!("[--preset {}]", names.join("|"));
         assert!(include_str!("../../README.md").contains(&md), "{md}");
+        let noted: Vec<&str> = PRESET_NOTES.iter().map(|(n, _)| *n).collect();
+        assert_eq!(noted, names);
         let e = DescriptorParams::preset("attic").unwrap_err().to_string();
         assert!(e.contains(&names.join(", ")), "{e}");
     }
