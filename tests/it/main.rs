@@ -25,6 +25,7 @@ mod properties;
 mod readers;
 mod readme;
 mod real_data;
+mod scene_families;
 mod simulator;
 mod survey;
 mod untrusted_json;
