@@ -362,6 +362,7 @@ mod tests {
                 cols,
                 matrices: vec![m],
                 summary: Default::default(),
+                parts: Vec::new(),
             }
         };
         let n = MATRIX_LIMIT + 1;

@@ -2,6 +2,7 @@
 //! classify a new scan (each category's centre in descriptor space), with
 //! the descriptor parameters it was made with. Saved and loaded as JSON.
 
+use crate::descriptor::parts::{cumulative_len, parts_distance};
 use crate::descriptor::{Descriptor, DescriptorParams};
 use crate::distance::{
     check_shape, matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared, Space,
@@ -28,6 +29,10 @@ pub struct Category {
     /// Largest Delta from the centre to a member: beyond ~this, a new scan
     /// is unlike anything the category saw.
     pub radius: f32,
+    /// Members' mean extra parts, weighted as the model's parameters say
+    /// (the form of `Prepared::parts`); absent without parts.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub parts: Vec<f32>,
 }
 
 /// Categories with names, ready to classify new scans. Deserialisation
@@ -76,7 +81,15 @@ impl TryFrom<ModelData> for LabelledModel {
         if m.categories.is_empty() {
             return Err(Error::Mismatch("the model has no categories".into()));
         }
+        let parts_len: usize = m.params.parts.iter().map(|p| cumulative_len(p.kind)).sum();
         for c in &m.categories {
+            if c.parts.len() != parts_len || !c.parts.iter().all(|v| v.is_finite()) {
+                return Err(Error::Mismatch(format!(
+                    "category {:?} has {} part values, its parameters make {parts_len}",
+                    c.name,
+                    c.parts.len()
+                )));
+            }
             if c.centre.len() != m.rows * m.cols
                 || !c.centre.iter().all(|v| v.is_finite())
                 || c.total.is_nan()
@@ -191,6 +204,7 @@ impl LabelledModel {
                 centre: unpad(&centre.matrix, first.rows, first.stride),
                 total: centre.total,
                 radius,
+                parts: centre.parts,
             });
         }
         Ok(LabelledModel {
@@ -238,15 +252,21 @@ impl LabelledModel {
     /// The nearest category of a described scan.
     pub fn classify(&self, d: &Descriptor) -> Result<Classification> {
         check_shape((d.rows, d.cols), (self.rows, self.cols))?;
+        d.validate_for(&self.params)?;
         let p = Prepared::new(d, DistanceOptions::from(&self.params))?;
         let mut best: Option<Classification> = None;
         for c in &self.categories {
             let centre = pad(&c.centre, self.rows, p.stride);
-            let dist = p
+            let ndt = p
                 .candidates()
                 .map(|m| matrix_distance(&centre, m, p.stride, self.cols, self.params.metric))
                 .fold(f32::INFINITY, f32::min)
                 * size_factor(c.total, p.total);
+            let dist = if p.parts.is_empty() && p.ndt_weight == 1.0 {
+                ndt
+            } else {
+                p.ndt_weight * ndt + parts_distance(&c.parts, &p.parts)
+            };
             if best.as_ref().is_none_or(|b| dist < b.distance) {
                 best = Some(Classification {
                     name: c.name.clone(),

@@ -11,12 +11,28 @@ fn use_json(bytes: &[u8]) {
         return;
     };
     if let Ok(model) = LabelledModel::from_json(text) {
-        // A scan of the model's own shape: one count in every cell.
+        // A scan of the model's own shape: one count in every cell, and
+        // each of its parts' channels uniform.
+        let parts = model
+            .params
+            .parts
+            .iter()
+            .map(|p| placecat::descriptor::PartValues {
+                kind: p.kind,
+                values: p
+                    .kind
+                    .channels()
+                    .iter()
+                    .flat_map(|&b| vec![1.0 / b as f32; b])
+                    .collect(),
+            })
+            .collect();
         let d = Descriptor {
             rows: model.rows,
             cols: model.cols,
             matrices: vec![vec![1; model.rows * model.cols]],
             summary: Default::default(),
+            parts,
         };
         let _ = model.classify(&d);
     }

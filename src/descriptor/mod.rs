@@ -1,15 +1,24 @@
 //! The NDT-histogram appearance descriptor (docs/design.md#descriptor):
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
-//! [`histogram`] matrices.
+//! [`histogram`] matrices; and optional extra [`parts`] beside it (issue
+//! 18): [`height_range`], [`slice`], [`esf`], [`ring`].
 
 pub mod alignment;
 pub mod directions;
+pub mod esf;
+pub mod height_range;
 pub mod histogram;
 pub mod ndt_grid;
 pub mod params;
+pub mod parts;
+pub mod ring;
 pub mod shape;
+pub mod slice;
 
-pub use params::{preset_names, Alignment, DescriptorParams, Metric, Normalisation, PRESETS};
+pub use params::{
+    preset_names, Alignment, DescriptorParams, Metric, Normalisation, PRESETS, PRESET_NOTES,
+};
+pub use parts::{Part, PartKind, PartValues};
 
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -53,6 +62,10 @@ pub struct Descriptor {
     /// What describing the scan found (points, voxels, classes), for display
     /// and the unreliable flag.
     pub summary: Summary,
+    /// The extra parts, in the order of the parameters' `parts` (none for
+    /// the paper's descriptor, and then left out of JSON).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub parts: Vec<PartValues>,
 }
 
 impl Descriptor {
@@ -81,7 +94,7 @@ impl Descriptor {
         if self.total() == 0 {
             return Err(Error::NoDescriptor("all counts are zero".into()));
         }
-        Ok(())
+        self.parts.iter().try_for_each(PartValues::validate)
     }
 
     /// [`validate`](Self::validate), and that `params` make this shape: a
@@ -94,6 +107,13 @@ impl Descriptor {
             return Err(Error::Mismatch(format!(
                 "the descriptor is {}x{}, the set's parameters make {rows}x{cols}",
                 self.rows, self.cols
+            )));
+        }
+        let have: Vec<PartKind> = self.parts.iter().map(|p| p.kind).collect();
+        let want: Vec<PartKind> = params.parts.iter().map(|p| p.kind).collect();
+        if have != want {
+            return Err(Error::Mismatch(format!(
+                "the descriptor has parts {have:?}, the set's parameters make {want:?}"
             )));
         }
         Ok(())
@@ -140,5 +160,13 @@ pub fn describe(points: &[[f32; 3]], params: &DescriptorParams) -> Result<Descri
         cols: params.cols(),
         matrices,
         summary,
+        parts: params
+            .parts
+            .iter()
+            .map(|p| PartValues {
+                kind: p.kind,
+                values: p.kind.describe(points),
+            })
+            .collect(),
     })
 }

@@ -2,6 +2,7 @@
 //! presets, plus the variants of docs/design.md#variants. One height band
 //! and the Tab. II values give exactly the paper's descriptor.
 
+use super::parts::{Part, PartKind, MAX_PARTS};
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
 
@@ -84,6 +85,19 @@ pub struct DescriptorParams {
     pub metric: Metric,
     /// Scans with fewer classified voxels are flagged unreliable.
     pub min_voxels: usize,
+    /// Weight of the NDT histogram's Delta in the distance (1 = the
+    /// paper's distance; 0 = the extra parts alone). Left out of JSON when
+    /// 1, so the paper's presets read and write as before.
+    #[serde(skip_serializing_if = "is_one")]
+    pub ndt_weight: f64,
+    /// Extra parts beside the NDT histogram, each with its weight
+    /// (descriptor::parts); empty for the paper's descriptor.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub parts: Vec<Part>,
+}
+
+fn is_one(w: &f64) -> bool {
+    *w == 1.0
 }
 
 /// A preset's constructor.
@@ -96,6 +110,21 @@ pub const PRESETS: [(&str, Preset); 4] = [
     ("outdoor", DescriptorParams::outdoor),
     ("indoor_bands", DescriptorParams::indoor_bands),
     ("perception_oru", DescriptorParams::perception_oru),
+];
+
+/// One line per preset saying what it is for, in the order of [`PRESETS`]
+/// (the CLI's help, the page's menu and the wasm API show these).
+pub const PRESET_NOTES: [(&str, &str); 4] = [
+    ("indoor", "the paper's indoor parameters (Tab. II)"),
+    ("outdoor", "the paper's outdoor parameters (Tab. II)"),
+    (
+        "indoor_bands",
+        "indoor with height bands and no far ranges (docs/design.md#variants)",
+    ),
+    (
+        "perception_oru",
+        "close to the public C++ implementation, for comparison",
+    ),
 ];
 
 /// The names of [`PRESETS`], in order.
@@ -137,6 +166,8 @@ impl DescriptorParams {
             normalisation: Normalisation::Total,
             metric: Metric::Paper,
             min_voxels: 20,
+            ndt_weight: 1.0,
+            parts: Vec::new(),
         }
     }
 
@@ -285,7 +316,47 @@ impl DescriptorParams {
                 "classes x height bands x ranges make {cells} cells per matrix (at most {MAX_CELLS})"
             ));
         }
+        self.validate_weights()
+    }
+
+    /// The weights of the NDT histogram and of the parts: finite, not
+    /// negative, not all zero, each kind of part at most once.
+    fn validate_weights(&self) -> Result<()> {
+        if !(self.ndt_weight.is_finite() && self.ndt_weight >= 0.0) {
+            return invalid(format!(
+                "ndt_weight must be finite and >= 0, got {}",
+                self.ndt_weight
+            ));
+        }
+        if self.parts.len() > MAX_PARTS {
+            return invalid(format!(
+                "at most {MAX_PARTS} parts, got {}",
+                self.parts.len()
+            ));
+        }
+        for (i, p) in self.parts.iter().enumerate() {
+            if !(p.weight.is_finite() && p.weight >= 0.0) {
+                return invalid(format!(
+                    "the weight of part {:?} must be finite and >= 0, got {}",
+                    p.kind, p.weight
+                ));
+            }
+            if self.parts[..i].iter().any(|q| q.kind == p.kind) {
+                return invalid(format!("part {:?} is given twice", p.kind));
+            }
+        }
+        if self.ndt_weight == 0.0 && self.parts.iter().all(|p| p.weight == 0.0) {
+            return invalid("ndt_weight and every part's weight are 0: nothing to compare");
+        }
         Ok(())
+    }
+
+    /// The weight of a kind of part (0 when the parameters have none).
+    pub fn part_weight(&self, kind: PartKind) -> f64 {
+        self.parts
+            .iter()
+            .find(|p| p.kind == kind)
+            .map_or(0.0, |p| p.weight)
     }
 }
 

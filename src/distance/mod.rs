@@ -8,6 +8,11 @@
 //! Options: per-column normalisation, and Hellinger / chi-squared in place of
 //! the column-wise L2 (the size factor max/min is kept for all metrics).
 //!
+//! With extra parts (issue 18, `descriptor::parts`), the distance is
+//! `ndt_weight * Delta + sum_k weight_k * d_k`, each part's d_k in [0, 1]
+//! (channel-wise earth mover's distance over its largest value); with
+//! `ndt_weight` 1 and no parts it is Delta, bit for bit.
+//!
 //! - `prepared`: descriptors normalised and padded once;
 //! - `kernel`: the one loop per metric, and Delta between prepared items;
 //! - `matrix`: the n x n Delta matrix;
@@ -23,17 +28,29 @@ pub use matrix::DistanceMatrix;
 pub use prepared::{normalise, pad, prepare_all, unpad, Prepared};
 pub use space::{Centre, Space};
 
+use crate::descriptor::parts::MAX_PARTS;
 use crate::descriptor::{Descriptor, DescriptorParams, Metric, Normalisation};
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 
 /// How two descriptors are compared.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct DistanceOptions {
     /// How each matrix F is normalised (by |F|, or per column).
     pub normalisation: Normalisation,
     /// The distance between two normalised matrices.
     pub metric: Metric,
+    /// Weight of Delta (1: the paper's distance).
+    #[serde(default = "one")]
+    pub ndt_weight: f32,
+    /// Weight of each kind of extra part, indexed by
+    /// [`PartKind::index`](crate::descriptor::PartKind::index) (0: not used).
+    #[serde(default)]
+    pub part_weights: [f32; MAX_PARTS],
+}
+
+fn one() -> f32 {
+    1.0
 }
 
 impl Default for DistanceOptions {
@@ -41,15 +58,23 @@ impl Default for DistanceOptions {
         DistanceOptions {
             normalisation: Normalisation::Total,
             metric: Metric::Paper,
+            ndt_weight: 1.0,
+            part_weights: [0.0; MAX_PARTS],
         }
     }
 }
 
 impl From<&DescriptorParams> for DistanceOptions {
     fn from(p: &DescriptorParams) -> Self {
+        let mut part_weights = [0.0; MAX_PARTS];
+        for part in &p.parts {
+            part_weights[part.kind.index()] = part.weight as f32;
+        }
         DistanceOptions {
             normalisation: p.normalisation,
             metric: p.metric,
+            ndt_weight: p.ndt_weight as f32,
+            part_weights,
         }
     }
 }
@@ -67,14 +92,23 @@ pub(crate) fn check_shape(found: (usize, usize), expected: (usize, usize)) -> Re
     Ok(())
 }
 
+/// Two prepared descriptors must hold the same parts to be compared.
+pub(crate) fn check_parts(a: &Prepared, b: &Prepared) -> Result<()> {
+    if a.part_kinds != b.part_kinds {
+        return Err(Error::Mismatch(format!(
+            "descriptors with different parts ({:?} and {:?}): made with different parameters",
+            a.part_kinds, b.part_kinds
+        )));
+    }
+    Ok(())
+}
+
 /// Delta between two descriptors.
 pub fn delta(a: &Descriptor, b: &Descriptor, opts: DistanceOptions) -> Result<f32> {
     check_shape((a.rows, a.cols), (b.rows, b.cols))?;
-    Ok(delta_prepared(
-        &Prepared::new(a, opts)?,
-        &Prepared::new(b, opts)?,
-        opts.metric,
-    ))
+    let (pa, pb) = (Prepared::new(a, opts)?, Prepared::new(b, opts)?);
+    check_parts(&pa, &pb)?;
+    Ok(delta_prepared(&pa, &pb, opts.metric))
 }
 
 /// The full pairwise Delta matrix (parallel natively).
@@ -96,6 +130,7 @@ mod tests {
                 .map(|_| (0..rows * cols).map(|_| r.random_range(0..40)).collect())
                 .collect(),
             summary: Default::default(),
+            parts: Vec::new(),
         }
     }
 

@@ -1,8 +1,9 @@
 //! Descriptors prepared once for many comparisons: normalised, column-major
 //! and padded.
 
-use super::{check_shape, DistanceOptions};
-use crate::descriptor::{Descriptor, Normalisation};
+use super::{check_parts, check_shape, DistanceOptions};
+use crate::descriptor::parts::cumulative;
+use crate::descriptor::{Descriptor, Normalisation, PartKind};
 use crate::error::Result;
 
 /// A descriptor with its matrices normalised once, for many comparisons.
@@ -25,6 +26,13 @@ pub struct Prepared {
     pub padded: Vec<f32>,
     /// Rows of each padded column: `rows` rounded up to a multiple of 4.
     pub stride: usize,
+    /// Weight of Delta in the distance (1: the paper's).
+    pub ndt_weight: f32,
+    /// The extra parts, weighted, in the form they are compared in
+    /// ([`cumulative`]), one after another; empty without parts.
+    pub parts: Vec<f32>,
+    /// The kinds of those parts, in order.
+    pub part_kinds: Vec<PartKind>,
 }
 
 /// A column-major rows x cols matrix with each column padded with zeros to
@@ -77,12 +85,19 @@ impl Prepared {
             let normalised = normalise(m, d.rows, d.cols, opts.normalisation);
             extend_column_major_padded(&mut padded, &normalised, d.rows, d.cols, stride);
         }
+        let mut parts = Vec::new();
+        for p in &d.parts {
+            cumulative(p, opts.part_weights[p.kind.index()], &mut parts);
+        }
         Ok(Prepared {
             rows: d.rows,
             cols: d.cols,
             total,
             padded,
             stride,
+            ndt_weight: opts.ndt_weight,
+            parts,
+            part_kinds: d.parts.iter().map(|p| p.kind).collect(),
         })
     }
 
@@ -100,7 +115,7 @@ impl Prepared {
     /// Bytes this item holds on the heap; `examples/scaling.rs` reports it
     /// beside the Delta matrix's size.
     pub fn heap_bytes(&self) -> usize {
-        self.padded.capacity() * std::mem::size_of::<f32>()
+        (self.padded.capacity() + self.parts.capacity()) * std::mem::size_of::<f32>()
     }
 }
 
@@ -134,9 +149,15 @@ pub fn prepare_all(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<
             check_shape((d.rows, d.cols), (first.rows, first.cols))?;
         }
     }
-    descriptors
+    let prepared: Vec<Prepared> = descriptors
         .iter()
         .enumerate()
         .map(|(i, d)| Prepared::new(d, opts).map_err(|e| e.in_file(format!("descriptor {i}"))))
-        .collect()
+        .collect::<Result<_>>()?;
+    if let Some(first) = prepared.first() {
+        for (i, p) in prepared.iter().enumerate() {
+            check_parts(p, first).map_err(|e| e.in_file(format!("descriptor {i}")))?;
+        }
+    }
+    Ok(prepared)
 }

@@ -6,6 +6,7 @@ use super::{
     delta_prepared, matrix_distance, prepare_all, size_factor, DistanceMatrix, DistanceOptions,
     Prepared,
 };
+use crate::descriptor::parts::parts_distance;
 use crate::descriptor::{Descriptor, Metric};
 use crate::error::Result;
 
@@ -25,6 +26,9 @@ pub struct Centre {
     pub matrix: Vec<f32>,
     /// The members' mean |F|, the centre's size in Delta's size factor.
     pub total: f32,
+    /// The members' mean extra parts, in the form of [`Prepared::parts`]
+    /// (empty without parts).
+    pub parts: Vec<f32>,
 }
 
 impl Space {
@@ -71,13 +75,23 @@ impl Space {
         let (stride, cols) = self.shape();
         let item = &self.items[i];
         let mut best = (f32::INFINITY, 0);
+        if item.ndt_weight == 0.0 {
+            return (parts_distance(&c.parts, &item.parts), 0);
+        }
         for (k, m) in item.candidates().enumerate() {
             let d = matrix_distance(&c.matrix, m, stride, cols, self.metric);
             if d < best.0 {
                 best = (d, k);
             }
         }
-        (best.0 * size_factor(c.total, item.total), best.1)
+        let ndt = best.0 * size_factor(c.total, item.total);
+        if item.parts.is_empty() && item.ndt_weight == 1.0 {
+            return (ndt, best.1);
+        }
+        (
+            item.ndt_weight * ndt + parts_distance(&c.parts, &item.parts),
+            best.1,
+        )
     }
 
     /// A centre at item i (its first candidate).
@@ -85,6 +99,7 @@ impl Space {
         Centre {
             matrix: self.items[i].candidate(0).to_vec(),
             total: self.items[i].total,
+            parts: self.items[i].parts.clone(),
         }
     }
 
@@ -95,19 +110,25 @@ impl Space {
             return None;
         }
         let mut matrix = vec![0f32; near.matrix.len()];
+        let mut parts = vec![0f32; near.parts.len()];
         let mut total = 0f64;
         for &i in members {
             let (_, k) = self.to_centre(near, i);
             for (a, b) in matrix.iter_mut().zip(self.items[i].candidate(k)) {
                 *a += b;
             }
+            for (a, b) in parts.iter_mut().zip(&self.items[i].parts) {
+                *a += b;
+            }
             total += self.items[i].total as f64;
         }
         let n = members.len() as f32;
         matrix.iter_mut().for_each(|v| *v /= n);
+        parts.iter_mut().for_each(|v| *v /= n);
         Some(Centre {
             matrix,
             total: (total / members.len() as f64) as f32,
+            parts,
         })
     }
 }

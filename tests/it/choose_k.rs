@@ -26,6 +26,7 @@ fn group(r: &mut rand_chacha::ChaCha8Rng, proto: &[f64], spread: f64, n: usize) 
                 .map(|&p| (p * 200.0 * (1.0 + r.random_range(-spread..=spread))).round() as u32)
                 .collect()],
             summary: Summary::default(),
+            parts: Vec::new(),
         })
         .collect()
 }

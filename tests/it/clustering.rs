@@ -274,6 +274,7 @@ fn without_the_matrix_small_trees_are_identical_and_large_ones_monotone() {
                 .map(|k| r.random_range(0..20) + u32::from(k == 0))
                 .collect()],
             summary: Default::default(),
+            parts: Vec::new(),
         })
         .collect();
     let space = Space::new(&many, opts).unwrap();

@@ -21,6 +21,7 @@ mod cli_trees;
 mod clustering;
 mod descriptor_geometry;
 mod parity;
+mod parts;
 mod properties;
 mod readers;
 mod readme;

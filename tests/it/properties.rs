@@ -17,6 +17,7 @@ fn descriptor(rows: usize, cols: usize, counts: Vec<Vec<u32>>) -> Descriptor {
         cols,
         matrices: counts,
         summary: Summary::default(),
+        parts: Vec::new(),
     }
 }
 

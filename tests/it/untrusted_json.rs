@@ -12,6 +12,7 @@ fn descriptor(rows: usize, cols: usize, matrix: Vec<u32>) -> Descriptor {
         cols,
         matrices: vec![matrix],
         summary: Default::default(),
+        parts: Vec::new(),
     }
 }
 

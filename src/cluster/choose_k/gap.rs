@@ -42,6 +42,12 @@ pub(crate) fn reference(space: &Space, m: usize, seed: u64) -> Space {
                         .copy_from_slice(&src.padded[from..from + item.stride]);
                 }
             }
+            // Extra parts come from yet another scan (drawn only when there
+            // are parts, so the paper's descriptor draws as before).
+            if !item.parts.is_empty() {
+                item.parts
+                    .clone_from(&space.items[r.random_range(0..n)].parts);
+            }
             item
         })
         .collect();

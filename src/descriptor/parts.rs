@@ -1,0 +1,275 @@
+//! Extra parts of a descriptor beside the NDT histogram (issue 18): each
+//! part is a few 1-D histograms ("channels"), each of unit sum, computed
+//! from the points alone (no training). Two parts are compared channel by
+//! channel with the 1-D earth mover's distance divided by its largest
+//! value (bins - 1), averaged over the channels: a part's distance lies in
+//! [0, 1] whatever the scene, so weights mean the same everywhere, and a
+//! channel that holds one scalar feature (soft-binned, see [`soft_bin`])
+//! compares as the absolute difference of the feature over its range.
+//!
+//! The parts: [`height_range`], [`slice`], [`esf`], [`ring`].
+
+use super::{esf, height_range, ring, slice};
+use crate::cloud::is_finite;
+use rustc_hash::FxHashSet;
+use serde::{Deserialize, Serialize};
+
+/// Most parts one descriptor may have (one of each kind).
+pub const MAX_PARTS: usize = 4;
+
+/// Which extra part.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
+#[serde(rename_all = "snake_case")]
+pub enum PartKind {
+    /// Distributions of horizontal range and of height ([`height_range`]).
+    HeightRange,
+    /// Geometry of the free-space polygon around the sensor ([`slice`]).
+    Slice,
+    /// Shape-function histograms of point pairs and triples ([`esf`]).
+    Esf,
+    /// Ring statistics of a polar height grid ([`ring`]).
+    Ring,
+}
+
+impl PartKind {
+    /// Every kind, in the order of [`DistanceOptions`](crate::DistanceOptions)'s weights.
+    pub const ALL: [PartKind; MAX_PARTS] = [
+        PartKind::HeightRange,
+        PartKind::Slice,
+        PartKind::Esf,
+        PartKind::Ring,
+    ];
+
+    /// Position in [`PartKind::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// Bins of each channel.
+    pub fn channels(self) -> &'static [usize] {
+        match self {
+            PartKind::HeightRange => &height_range::CHANNELS,
+            PartKind::Slice => &slice::CHANNELS,
+            PartKind::Esf => &esf::CHANNELS,
+            PartKind::Ring => &ring::CHANNELS,
+        }
+    }
+
+    /// Values of the part: the sum of [`channels`](Self::channels).
+    pub fn len(self) -> usize {
+        self.channels().iter().sum()
+    }
+
+    /// Always false: every part has values (for clippy's `len` rule).
+    pub fn is_empty(self) -> bool {
+        false
+    }
+
+    /// Compute the part from a scan's points (sensor frame, z up).
+    pub fn describe(self, points: &[[f32; 3]]) -> Vec<f32> {
+        let v = match self {
+            PartKind::HeightRange => height_range::describe(points),
+            PartKind::Slice => slice::describe(points),
+            PartKind::Esf => esf::describe(points),
+            PartKind::Ring => ring::describe(points),
+        };
+        debug_assert_eq!(v.len(), self.len());
+        v
+    }
+}
+
+/// One extra part and its weight in the distance.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
+#[serde(deny_unknown_fields)]
+pub struct Part {
+    /// Which part.
+    pub kind: PartKind,
+    /// Its weight: the part's distance (in [0, 1]) times this is added to
+    /// the NDT histogram's Delta times `ndt_weight`.
+    pub weight: f64,
+}
+
+/// A described part as stored in a descriptor: its kind and values
+/// (channel after channel, each of unit sum).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PartValues {
+    /// Which part.
+    pub kind: PartKind,
+    /// The channels' histograms, one after another.
+    pub values: Vec<f32>,
+}
+
+impl PartValues {
+    /// Check the length and that each channel is a histogram (finite,
+    /// non-negative, unit sum): values from JSON must not make a NaN later.
+    pub fn validate(&self) -> crate::Result<()> {
+        let bad = |why: &str| {
+            Err(crate::Error::Mismatch(format!(
+                "a {:?} part {why}",
+                self.kind
+            )))
+        };
+        if self.values.len() != self.kind.len() {
+            return bad(&format!(
+                "has {} values, not {}",
+                self.values.len(),
+                self.kind.len()
+            ));
+        }
+        let mut at = 0;
+        for &bins in self.kind.channels() {
+            let ch = &self.values[at..at + bins];
+            at += bins;
+            if ch.iter().any(|v| !v.is_finite() || *v < 0.0) {
+                return bad("has a negative or non-finite value");
+            }
+            if (ch.iter().sum::<f32>() - 1.0).abs() > 1e-3 {
+                return bad("has a channel that does not sum to 1");
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Add unit mass at position `x` (in bins, clamped to [0, bins - 1]) to
+/// `hist`, split linearly between the two nearest bins: the earth mover's
+/// distance between two such masses is then exactly |x - y| in bins.
+pub fn soft_bin(hist: &mut [f32], x: f64, mass: f32) {
+    let top = (hist.len() - 1) as f64;
+    let x = if x.is_finite() {
+        x.clamp(0.0, top)
+    } else {
+        0.0
+    };
+    let lo = x.floor() as usize;
+    let frac = (x - lo as f64) as f32;
+    hist[lo] += mass * (1.0 - frac);
+    if frac > 0.0 {
+        hist[lo + 1] += mass * frac;
+    }
+}
+
+/// One channel holding one scalar: `x` mapped linearly from [lo, hi] onto
+/// the bins (clamped).
+pub fn scalar_channel(bins: usize, x: f64, lo: f64, hi: f64) -> Vec<f32> {
+    let mut h = vec![0f32; bins];
+    soft_bin(&mut h, (x - lo) / (hi - lo) * (bins - 1) as f64, 1.0);
+    h
+}
+
+/// Scale `hist` to unit sum; an empty histogram puts its mass in bin 0
+/// (for every part, bin 0 means "nothing there").
+pub fn unit_sum(hist: &mut [f32]) {
+    let s: f32 = hist.iter().sum();
+    if s > 0.0 {
+        hist.iter_mut().for_each(|v| *v /= s);
+    } else {
+        hist[0] = 1.0;
+    }
+}
+
+/// One point per occupied voxel of edge `size` (the first point seen in
+/// it), finite points only, in a fixed order. A lidar samples near
+/// surfaces far more densely than far ones; statistics of these points
+/// weigh surfaces by area instead.
+pub fn voxel_sample(points: &[[f32; 3]], size: f32) -> Vec<[f32; 3]> {
+    let inv = 1.0 / size;
+    let mut seen = FxHashSet::default();
+    points
+        .iter()
+        .filter(|p| is_finite(p))
+        .filter(|p| {
+            let k = p.map(|v| (v * inv).floor() as i32);
+            seen.insert(k)
+        })
+        .copied()
+        .collect()
+}
+
+/// The form parts are compared in: each channel's cumulative sums, scaled
+/// so that the L1 distance of two of them is the part's distance times
+/// `weight` (channel EMD / (bins - 1), averaged over channels). Linear, so
+/// means of these are the form of the mean histogram (cluster centres).
+pub fn cumulative(p: &PartValues, weight: f32, out: &mut Vec<f32>) {
+    let channels = p.kind.channels();
+    let mut at = 0;
+    for &bins in channels {
+        let scale = weight / ((bins.max(2) - 1) * channels.len()) as f32;
+        let mut sum = 0f32;
+        // The last cumulative sum is 1 for every histogram: left out.
+        for v in &p.values[at..at + bins - 1] {
+            sum += v;
+            out.push(sum * scale);
+        }
+        at += bins;
+    }
+}
+
+/// Length of the [`cumulative`] form of a part.
+pub fn cumulative_len(kind: PartKind) -> usize {
+    kind.channels().iter().map(|b| b - 1).sum()
+}
+
+/// The L1 distance of two cumulative forms: the weighted sum of part
+/// distances.
+#[inline]
+pub fn parts_distance(a: &[f32], b: &[f32]) -> f32 {
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Soft binning makes the EMD of two scalars their distance in bins.
+    #[test]
+    fn soft_binned_scalars_compare_as_their_difference() {
+        let pv = |x: f64| PartValues {
+            kind: PartKind::HeightRange,
+            values: {
+                let mut v = Vec::new();
+                for &b in PartKind::HeightRange.channels() {
+                    v.extend(scalar_channel(b, x, 0.0, (b - 1) as f64));
+                }
+                v
+            },
+        };
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        cumulative(&pv(0.3), 1.0, &mut a);
+        cumulative(&pv(1.6), 1.0, &mut b);
+        let channels = PartKind::HeightRange.channels();
+        let want: f32 = channels
+            .iter()
+            .map(|&bins| 1.3 / ((bins - 1) * channels.len()) as f32)
+            .sum();
+        assert!((parts_distance(&a, &b) - want).abs() < 1e-5);
+        assert_eq!(a.len(), cumulative_len(PartKind::HeightRange));
+    }
+
+    /// The whole mass at opposite ends is the largest distance: 1.
+    #[test]
+    fn a_part_distance_is_at_most_one() {
+        let end = |last: bool| {
+            let mut v = Vec::new();
+            for &b in PartKind::Slice.channels() {
+                let mut h = vec![0f32; b];
+                h[if last { b - 1 } else { 0 }] = 1.0;
+                v.extend(h);
+            }
+            PartValues {
+                kind: PartKind::Slice,
+                values: v,
+            }
+        };
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        cumulative(&end(false), 1.0, &mut a);
+        cumulative(&end(true), 1.0, &mut b);
+        assert!((parts_distance(&a, &b) - 1.0).abs() < 1e-5);
+        assert!(end(true).validate().is_ok());
+        let mut short = end(true);
+        short.values.pop();
+        assert!(short.validate().is_err());
+    }
+}

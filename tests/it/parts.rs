@@ -1,0 +1,205 @@
+//! The extra descriptor parts (issue 18) on known geometry, their distance,
+//! and JSON round trips of descriptors and models that hold them.
+
+use crate::common::*;
+use placecat::descriptor::{slice, Part, PartKind, PRESETS};
+use placecat::model::LabelledModel;
+use placecat::{delta, describe, Descriptor, DescriptorParams, DistanceOptions};
+
+/// The indoor preset with every part at weight 1 and the NDT at `ndt`.
+fn every_part(ndt: f64) -> DescriptorParams {
+    DescriptorParams {
+        ndt_weight: ndt,
+        parts: PartKind::ALL
+            .iter()
+            .map(|&kind| Part { kind, weight: 1.0 })
+            .collect(),
+        ..DescriptorParams::indoor()
+    }
+}
+
+/// One part alone, at weight 1, the NDT not counted.
+fn alone(kind: PartKind) -> DescriptorParams {
+    DescriptorParams {
+        ndt_weight: 0.0,
+        parts: vec![Part { kind, weight: 1.0 }],
+        ..DescriptorParams::indoor()
+    }
+}
+
+fn box_room(seed: u64, size: [f32; 3]) -> Vec<[f32; 3]> {
+    room(seed, size, -1.2, &[], 300.0)
+}
+
+/// An empty 8 x 5 m room: the free-space polygon is the room's floor plan,
+/// 40 m² and 26 m round, compactness 4 pi 40 / 26² = 0.744 and elongation
+/// 5 / 8 (within the 2-degree sectors' and the wall sampling's error).
+#[test]
+fn the_slice_of_a_box_room_is_its_floor_plan() {
+    let ranges = slice::sector_points(&box_room(1, [8.0, 5.0, 3.0])).unwrap();
+    let f = slice::features(&ranges);
+    assert!((f.area - 40.0).abs() < 1.2, "area {}", f.area);
+    assert!(
+        (f.perimeter - 26.0).abs() < 0.6,
+        "perimeter {}",
+        f.perimeter
+    );
+    assert!(
+        (f.compactness - 0.744).abs() < 0.02,
+        "compactness {}",
+        f.compactness
+    );
+    assert!(
+        (f.elongation - 0.625).abs() < 0.02,
+        "elongation {}",
+        f.elongation
+    );
+    // A square room of the same area is not elongated, and a long corridor is.
+    let square = slice::features(&slice::sector_points(&box_room(2, [6.3, 6.3, 3.0])).unwrap());
+    assert!(square.elongation > 0.97, "{square:?}");
+    let corridor = slice::features(&slice::sector_points(&corridor(3)).unwrap());
+    assert!(corridor.elongation < 0.1, "{corridor:?}");
+    assert!((corridor.area - 66.0).abs() < 3.0, "{corridor:?}");
+}
+
+/// Rotating a scan about z changes no part beyond the noise of its voxel
+/// grid and sector edges; a room of another size is far away.
+#[test]
+fn every_part_is_invariant_to_rotation_about_z() {
+    let pts = office(4);
+    let turned = rotate_points(&pts, &rotation([0.0, 0.0, 1.0], 1.1));
+    let other = box_room(5, [16.0, 12.0, 5.0]);
+    for kind in PartKind::ALL {
+        let p = alone(kind);
+        let opts = DistanceOptions::from(&p);
+        let d = |a: &[[f32; 3]], b: &[[f32; 3]]| {
+            delta(&describe(a, &p).unwrap(), &describe(b, &p).unwrap(), opts).unwrap()
+        };
+        let (same, far) = (d(&pts, &turned), d(&pts, &other));
+        assert!(same < 0.03, "{kind:?}: rotated {same}");
+        assert!(
+            far > 4.0 * same && far > 0.05,
+            "{kind:?}: rotated {same}, other {far}"
+        );
+    }
+}
+
+/// The combined distance is 0 from a scan to itself, symmetric, and the
+/// weighted sum of its parts and the NDT's Delta.
+#[test]
+fn the_combined_distance_is_the_weighted_sum_of_its_parts() {
+    let p = every_part(1.0);
+    let (a, b) = (
+        describe(&office(6), &p).unwrap(),
+        describe(&box_room(7, [12.0, 9.0, 4.0]), &p).unwrap(),
+    );
+    let opts = DistanceOptions::from(&p);
+    assert_eq!(delta(&a, &a, opts).unwrap(), 0.0);
+    let ab = delta(&a, &b, opts).unwrap();
+    assert_eq!(ab, delta(&b, &a, opts).unwrap());
+    let paper = DescriptorParams::indoor();
+    let mut sum = delta(&a, &b, DistanceOptions::from(&paper)).unwrap();
+    for kind in PartKind::ALL {
+        let d = delta(&a, &b, DistanceOptions::from(&alone(kind))).unwrap();
+        assert!(d > 0.0 && d <= 1.0, "{kind:?}: {d}");
+        sum += d;
+    }
+    assert!((ab - sum).abs() < 1e-4 * sum, "{ab} vs {sum}");
+    // Weights scale their parts: doubling the slice's adds its distance once more.
+    let mut heavier = p.clone();
+    heavier.parts[1].weight = 2.0;
+    let slice_d = delta(&a, &b, DistanceOptions::from(&alone(PartKind::Slice))).unwrap();
+    let h = delta(&a, &b, DistanceOptions::from(&heavier)).unwrap();
+    assert!((h - ab - slice_d).abs() < 1e-4 * h);
+}
+
+/// Descriptors with and without parts do not compare (an error, not a
+/// number), and the paper's presets write no part fields.
+#[test]
+fn parts_must_match_and_the_paper_presets_are_unchanged() {
+    let with = describe(&office(8), &every_part(1.0)).unwrap();
+    let without = describe(&office(8), &DescriptorParams::indoor()).unwrap();
+    let e = delta(&with, &without, DistanceOptions::default()).unwrap_err();
+    assert!(e.to_string().contains("different parts"), "{e}");
+    for name in ["indoor", "outdoor", "indoor_bands", "perception_oru"] {
+        let json = serde_json::to_string(&DescriptorParams::preset(name).unwrap()).unwrap();
+        assert!(
+            !json.contains("parts") && !json.contains("ndt_weight"),
+            "{json}"
+        );
+    }
+    assert!(serde_json::to_string(&without)
+        .unwrap()
+        .find("parts")
+        .is_none());
+    // Every preset with parts validates, and describes a room.
+    for (name, make) in PRESETS {
+        let p = make();
+        p.validate().unwrap();
+        if !p.parts.is_empty() {
+            let d = describe(&office(9), &p).unwrap();
+            d.validate_for(&p).unwrap();
+            assert_eq!(d.parts.len(), p.parts.len(), "{name}");
+        }
+    }
+}
+
+#[test]
+fn bad_weights_are_refused_by_name() {
+    let mut p = every_part(0.0);
+    p.parts.iter_mut().for_each(|q| q.weight = 0.0);
+    assert!(p
+        .validate()
+        .unwrap_err()
+        .to_string()
+        .contains("nothing to compare"));
+    let mut p = every_part(1.0);
+    p.parts[2].weight = f64::NAN;
+    assert!(p.validate().unwrap_err().to_string().contains("Esf"));
+    let mut p = every_part(1.0);
+    p.parts.push(p.parts[0]);
+    assert!(p.validate().is_err());
+    p.parts.pop();
+    p.parts[3].kind = PartKind::Slice;
+    assert!(p.validate().unwrap_err().to_string().contains("twice"));
+    let e = serde_json::from_str::<DescriptorParams>(r#"{"parts":[{"kind":"iron","weight":1}]}"#)
+        .unwrap_err();
+    assert!(e.to_string().contains("iron"), "{e}");
+}
+
+/// A descriptor with parts and a model made from such descriptors read
+/// back from JSON as they were, and the model classifies as before; a
+/// part whose histogram does not sum to 1 is refused.
+#[test]
+fn descriptors_and_models_with_parts_round_trip() {
+    let p = every_part(0.5);
+    let scans = [
+        office(10),
+        office(11),
+        box_room(12, [20.0, 14.0, 6.0]),
+        box_room(13, [21.0, 15.0, 6.0]),
+    ];
+    let ds: Vec<Descriptor> = scans.iter().map(|s| describe(s, &p).unwrap()).collect();
+    let text = serde_json::to_string(&ds[0]).unwrap();
+    let back: Descriptor = serde_json::from_str(&text).unwrap();
+    assert_eq!(back, ds[0]);
+    back.validate_for(&p).unwrap();
+    let mut bad = back.clone();
+    bad.parts[1].values[0] += 0.5;
+    assert!(bad.validate().unwrap_err().to_string().contains("sum to 1"));
+
+    let names = [(0, "office".to_string()), (1, "hall".to_string())];
+    let model = LabelledModel::build(&p, &ds, &[0, 0, 1, 1], &names).unwrap();
+    let again = LabelledModel::from_json(&model.to_json().unwrap()).unwrap();
+    assert_eq!(again, model);
+    for (d, want) in ds.iter().zip(["office", "office", "hall", "hall"]) {
+        assert_eq!(again.classify(d).unwrap().name, want);
+    }
+    let fresh = describe(&box_room(14, [19.0, 13.0, 6.0]), &p).unwrap();
+    assert_eq!(again.classify(&fresh).unwrap().name, "hall");
+    // A model whose categories lost their parts is refused, naming them.
+    let mut v: serde_json::Value = serde_json::from_str(&model.to_json().unwrap()).unwrap();
+    v["categories"][0]["parts"] = serde_json::json!([]);
+    let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
+    assert!(e.to_string().contains("part values"), "{e}");
+}
