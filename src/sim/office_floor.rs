@@ -1,5 +1,6 @@
-//! A scene family written for issue 18 after the new descriptors existed,
-//! so that none of them was shaped on it: office floors. Each floor is a
+//! A scene family written for issue 18's evaluation while the new
+//! descriptors were being built (by another hand; none was tuned on it):
+//! office floors. [`super::school`] was written after they were committed. Each floor is a
 //! central corridor with a row of rooms on each side, doors open or shut
 //! into it, all under one ceiling; the rooms are private offices, meeting
 //! rooms, open-plan areas and restrooms (and storage closets, never
@@ -29,7 +30,52 @@ pub const OFFICE_FLOOR_KINDS: [&str; 5] = [
     "restroom",
 ];
 
-/// Width along the corridor of a room of a kind (m), lowest and highest.
+/// What makes a kind of floor: its kinds, their sizes, which rooms every
+/// floor has, and how rooms and the corridor are furnished. The office
+/// floor is [`OFFICE`]; [`super::school`] has another.
+pub struct FloorPlan {
+    /// The scanned kinds, the corridor first.
+    pub kinds: [&'static str; 5],
+    /// Width along the corridor of a room of a kind (m), lowest and highest.
+    pub width: fn(&str) -> (f64, f64),
+    /// Depth of a row of rooms, away from the corridor (m).
+    pub row_depth: (f64, f64),
+    /// Corridor width (m).
+    pub corridor_width: (f64, f64),
+    /// Floor to ceiling (m).
+    pub ceiling: (f64, f64),
+    /// The rooms every floor has on the north and the south side.
+    pub north: [&'static str; 2],
+    /// As `north`, the other side.
+    pub south: [&'static str; 2],
+    /// The kind that fills a row (gaps narrower than it: storage closets).
+    pub filler: &'static str,
+    /// Kinds open to the corridor through a wide opening, not a door.
+    pub open: &'static [&'static str],
+    /// Furniture of a room of a kind, interior [0, w] x [0, d], the
+    /// corridor wall at y = 0.
+    pub furnish: fn(&str, [f64; 3], &mut ChaCha8Rng, &mut Vec<Shape>),
+    /// Fittings of a corridor `length` long and `width` wide, `height` high.
+    pub fittings: fn(f64, f64, f64, &mut ChaCha8Rng, &mut Vec<Shape>),
+}
+
+/// The office floor.
+pub const OFFICE: FloorPlan = FloorPlan {
+    kinds: OFFICE_FLOOR_KINDS,
+    width: room_width,
+    row_depth: ROW_DEPTH,
+    corridor_width: CORRIDOR_WIDTH,
+    ceiling: CEILING,
+    north: ["open_plan", "meeting_room"],
+    south: ["restroom", "meeting_room"],
+    filler: "private_office",
+    open: &["open_plan"],
+    furnish,
+    fittings: corridor_fittings,
+};
+
+/// Width along the corridor of a room of an office-floor kind (m), lowest
+/// and highest.
 pub fn room_width(kind: &str) -> (f64, f64) {
     match kind {
         "private_office" => (2.8, 4.0),
@@ -51,7 +97,7 @@ const WALL: f64 = 0.12;
 /// One room of a floor: its kind and interior, in floor coordinates.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FloorRoom {
-    /// One of [`OFFICE_FLOOR_KINDS`], or `storage`.
+    /// One of the plan's kinds, or `storage`.
     pub kind: &'static str,
     /// Lowest x and y of the interior (m).
     pub min: [f64; 2],
@@ -72,11 +118,15 @@ pub struct Floor {
 }
 
 /// The kinds of one row, in order along the corridor: the kinds every
-/// floor has, then private offices, shuffled.
-fn row_kinds(first: &[&'static str], r: &mut ChaCha8Rng) -> Vec<&'static str> {
+/// floor has, then one to three fillers, shuffled.
+fn row_kinds(
+    first: &[&'static str],
+    filler: &'static str,
+    r: &mut ChaCha8Rng,
+) -> Vec<&'static str> {
     let mut kinds = first.to_vec();
     let offices = r.random_range(1..=3);
-    kinds.extend(std::iter::repeat_n("private_office", offices));
+    kinds.extend(std::iter::repeat_n(filler, offices));
     kinds.shuffle(r);
     kinds
 }
@@ -84,13 +134,14 @@ fn row_kinds(first: &[&'static str], r: &mut ChaCha8Rng) -> Vec<&'static str> {
 /// Room widths for `kinds`, then private offices (and a closet for the
 /// last gap) until the row is `length` long.
 fn fill_row(
+    plan: &FloorPlan,
     kinds: &[&'static str],
     widths: &[f64],
     length: f64,
     r: &mut ChaCha8Rng,
 ) -> Vec<(&'static str, f64)> {
     let mut row: Vec<_> = kinds.iter().copied().zip(widths.iter().copied()).collect();
-    let (lo, hi) = room_width("private_office");
+    let (lo, hi) = (plan.width)(plan.filler);
     // Each room after the first stands behind a partition wall.
     let mut left = length - widths.iter().sum::<f64>() - WALL * (widths.len() as f64 - 1.0);
     while left > WALL + 0.5 {
@@ -100,27 +151,25 @@ fn fill_row(
         } else {
             u(r, lo, hi).min(room - 0.5)
         };
-        row.push((if w >= lo { "private_office" } else { "storage" }, w));
+        row.push((if w >= lo { plan.filler } else { "storage" }, w));
         left -= w + WALL;
     }
     row
 }
 
-/// Build one floor.
-pub fn floor(r: &mut ChaCha8Rng) -> Floor {
-    let h = u(r, CEILING.0, CEILING.1);
-    let cw = u(r, CORRIDOR_WIDTH.0, CORRIDOR_WIDTH.1);
-    let depth = [
-        u(r, ROW_DEPTH.0, ROW_DEPTH.1),
-        u(r, ROW_DEPTH.0, ROW_DEPTH.1),
-    ];
-    let north = row_kinds(&["open_plan", "meeting_room"], r);
-    let south = row_kinds(&["restroom", "meeting_room"], r);
+/// Build one floor of `plan`.
+pub fn floor(plan: &FloorPlan, r: &mut ChaCha8Rng) -> Floor {
+    let h = u(r, plan.ceiling.0, plan.ceiling.1);
+    let cw = u(r, plan.corridor_width.0, plan.corridor_width.1);
+    let (d0, d1) = plan.row_depth;
+    let depth = [u(r, d0, d1), u(r, d0, d1)];
+    let north = row_kinds(&plan.north, plan.filler, r);
+    let south = row_kinds(&plan.south, plan.filler, r);
     let draw = |kinds: &[&str], r: &mut ChaCha8Rng| -> Vec<f64> {
         kinds
             .iter()
             .map(|k| {
-                let (lo, hi) = room_width(k);
+                let (lo, hi) = (plan.width)(k);
                 u(r, lo, hi)
             })
             .collect()
@@ -129,8 +178,8 @@ pub fn floor(r: &mut ChaCha8Rng) -> Floor {
     let span = |w: &[f64]| w.iter().sum::<f64>() + WALL * (w.len() as f64 - 1.0);
     let length = span(&wn).max(span(&ws));
     let rows = [
-        fill_row(&north, &wn, length, r),
-        fill_row(&south, &ws, length, r),
+        fill_row(plan, &north, &wn, length, r),
+        fill_row(plan, &south, &ws, length, r),
     ];
     let mut shapes = vec![
         // Floor and ceiling over the whole floor, outer walls round it.
@@ -185,13 +234,14 @@ pub fn floor(r: &mut ChaCha8Rng) -> Floor {
         let mut x = 0.0;
         for &(kind, w) in row {
             let mut local = Vec::new();
-            furnish(kind, [w, d, h], r, &mut local);
+            (plan.furnish)(kind, [w, d, h], r, &mut local);
             let furniture: Vec<Shape> = local
                 .iter()
                 .map(|s| place(s, [false, flip], [x, y0]))
                 .collect();
             let wall_y = if flip { -WALL } else { cw };
-            shapes.extend(corridor_wall(kind, x, w, wall_y, h, r));
+            let open = plan.open.contains(&kind);
+            shapes.extend(corridor_wall(kind, open, x, w, wall_y, h, r));
             if x + w < length - 1e-9 {
                 let yy = if flip { -WALL - d } else { cw + WALL };
                 shapes.push(cuboid([x + w, yy, 0.0], [WALL, d, h]));
@@ -208,7 +258,7 @@ pub fn floor(r: &mut ChaCha8Rng) -> Floor {
         }
     }
     let mut corridor = Vec::new();
-    corridor_fittings(length, cw, h, r, &mut corridor);
+    (plan.fittings)(length, cw, h, r, &mut corridor);
     shapes.extend(corridor.iter().copied());
     rooms[0].furniture = corridor;
     Floor {
@@ -219,19 +269,27 @@ pub fn floor(r: &mut ChaCha8Rng) -> Floor {
 }
 
 /// The wall between a room and the corridor, from `x` along `width`, its
-/// corridor face at `y`: a door (open in three rooms of four; open plans
-/// have a wide opening) with a lintel above it.
-fn corridor_wall(kind: &str, x: f64, width: f64, y: f64, h: f64, r: &mut ChaCha8Rng) -> Vec<Shape> {
+/// corridor face at `y`: a door (open in three rooms of four; `open` rooms
+/// have a wide opening instead) with a lintel above it.
+fn corridor_wall(
+    kind: &str,
+    open: bool,
+    x: f64,
+    width: f64,
+    y: f64,
+    h: f64,
+    r: &mut ChaCha8Rng,
+) -> Vec<Shape> {
     let door = match kind {
-        "open_plan" => u(r, 2.4, 3.5),
+        _ if open => u(r, 2.4, 3.5),
         "storage" => 0.8f64.min(width - 0.2),
         _ => 0.9,
     };
-    if kind != "open_plan" && r.random::<f64>() < 0.25 {
+    if !open && r.random::<f64>() < 0.25 {
         return vec![cuboid([x, y, 0.0], [width, WALL, h])];
     }
     let d0 = x + u(r, 0.1, (width - door - 0.1).max(0.11));
-    let top = if kind == "open_plan" { h - 0.3 } else { 2.1 };
+    let top = if open { h - 0.3 } else { 2.1 };
     vec![
         cuboid([x, y, 0.0], [d0 - x, WALL, h]),
         cuboid(
@@ -384,16 +442,21 @@ fn corridor_fittings(length: f64, cw: f64, h: f64, r: &mut ChaCha8Rng, s: &mut V
     }
 }
 
-/// The scans of an office-floor simulation: `params.scans` per kind, in
-/// groups of `params.scans_per_room` per room, the rooms of a kind taken
-/// in turn from floors built one after another (one corridor and at least
-/// one room of every kind per floor) until every kind has enough.
-pub(super) fn plan(params: &SimParams, r: &mut ChaCha8Rng) -> (Vec<Scene>, Vec<Shot>) {
+/// The scans of a simulation of floors of `plan`: `params.scans` per
+/// kind, in groups of `params.scans_per_room` per room, the rooms of a
+/// kind taken in turn from floors built one after another (one corridor
+/// and at least one room of every kind per floor) until every kind has
+/// enough.
+pub(super) fn scans(
+    plan: &FloorPlan,
+    params: &SimParams,
+    r: &mut ChaCha8Rng,
+) -> (Vec<Scene>, Vec<Shot>) {
     let rooms_per_kind = params.scans.div_ceil(params.scans_per_room);
-    let floors: Vec<Floor> = (0..rooms_per_kind).map(|_| floor(r)).collect();
+    let floors: Vec<Floor> = (0..rooms_per_kind).map(|_| floor(plan, r)).collect();
     let mut shots = Vec::new();
     let mut room_id = 0;
-    for kind in OFFICE_FLOOR_KINDS {
+    for kind in plan.kinds {
         // Round-robin over floors, so consecutive rooms of a kind come from
         // different floors.
         let mut of_kind: Vec<(usize, usize)> = Vec::new();

@@ -4,7 +4,8 @@
 
 use crate::cli_common::{fails, placecat, succeeds, tmp};
 use placecat::sim::geometry::{Ray, Shape};
-use placecat::sim::office_floor::{self, OFFICE_FLOOR_KINDS};
+use placecat::sim::office_floor::{self, FloorPlan, OFFICE, OFFICE_FLOOR_KINDS};
+use placecat::sim::school::{SCHOOL, SCHOOL_KINDS};
 use placecat::sim::sensors::BEAM_COUNTS;
 use placecat::sim::{Buildings, LidarParams, SceneKind, SimParams, Simulation};
 
@@ -103,64 +104,83 @@ fn nearest(shapes: &[Shape], ray: &Ray) -> f64 {
 }
 
 #[test]
-fn office_floor_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
-    for seed in 1..=4 {
-        let mut r = placecat::rng::rng(seed);
-        let floor = office_floor::floor(&mut r);
-        assert_eq!(floor.rooms[0].kind, "corridor");
-        let width = |k: usize| floor.rooms[k].max[0] - floor.rooms[k].min[0];
-        let depth = |k: usize| floor.rooms[k].max[1] - floor.rooms[k].min[1];
-        let cw = depth(0);
-        assert!(
-            (1.8..=2.4).contains(&cw),
-            "seed {seed}: corridor {cw} m wide"
-        );
-        for kind in OFFICE_FLOOR_KINDS {
-            assert!(
-                floor.rooms.iter().any(|room| room.kind == kind),
-                "seed {seed}: no {kind}"
-            );
+fn office_and_school_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
+    for plan in [&OFFICE, &SCHOOL] {
+        for seed in 1..=4 {
+            check_floor(plan, seed);
         }
-        for k in 1..floor.rooms.len() {
-            let room = &floor.rooms[k];
-            let (lo, hi) = office_floor::room_width(room.kind);
-            let (w, d) = (width(k), depth(k));
+    }
+}
+
+fn check_floor(plan: &FloorPlan, seed: u64) {
+    let mut r = placecat::rng::rng(seed);
+    let floor = office_floor::floor(plan, &mut r);
+    assert_eq!(floor.rooms[0].kind, "corridor");
+    let width = |k: usize| floor.rooms[k].max[0] - floor.rooms[k].min[0];
+    let depth = |k: usize| floor.rooms[k].max[1] - floor.rooms[k].min[1];
+    let cw = depth(0);
+    let (lo, hi) = plan.corridor_width;
+    assert!((lo..=hi).contains(&cw), "seed {seed}: corridor {cw} m wide");
+    for kind in plan.kinds {
+        assert!(
+            floor.rooms.iter().any(|room| room.kind == kind),
+            "seed {seed}: no {kind}"
+        );
+    }
+    for k in 1..floor.rooms.len() {
+        let room = &floor.rooms[k];
+        let (lo, hi) = (plan.width)(room.kind);
+        let (w, d) = (width(k), depth(k));
+        assert!(
+            w >= lo - 1e-9 && w <= hi + 1e-9,
+            "seed {seed}: {} {w} m wide",
+            room.kind
+        );
+        let (lo, hi) = plan.row_depth;
+        assert!(
+            (lo..=hi).contains(&d),
+            "seed {seed}: {} {d} m deep",
+            room.kind
+        );
+        // Above the doors and the furniture, below the ceiling, a ray
+        // from the room's centre meets a wall where the room ends.
+        let c = [
+            (room.min[0] + room.max[0]) / 2.0,
+            (room.min[1] + room.max[1]) / 2.0,
+            floor.height - 0.15,
+        ];
+        for (dir, expect) in [
+            ([1.0, 0.0, 0.0], room.max[0] - c[0]),
+            ([-1.0, 0.0, 0.0], c[0] - room.min[0]),
+            ([0.0, 1.0, 0.0], room.max[1] - c[1]),
+            ([0.0, -1.0, 0.0], c[1] - room.min[1]),
+        ] {
+            let t = nearest(&floor.shapes, &Ray::towards(c, dir));
             assert!(
-                w >= lo - 1e-9 && w <= hi + 1e-9,
-                "seed {seed}: {} {w} m wide",
+                (t - expect).abs() < 1e-6,
+                "seed {seed}: {} {dir:?}: {t} vs {expect}",
                 room.kind
             );
-            assert!(
-                (4.5..=6.5).contains(&d),
-                "seed {seed}: {} {d} m deep",
-                room.kind
-            );
-            // Above the doors and the furniture, below the ceiling, a ray
-            // from the room's centre meets a wall where the room ends.
-            let c = [
-                (room.min[0] + room.max[0]) / 2.0,
-                (room.min[1] + room.max[1]) / 2.0,
-                floor.height - 0.15,
-            ];
-            for (dir, expect) in [
-                ([1.0, 0.0, 0.0], room.max[0] - c[0]),
-                ([-1.0, 0.0, 0.0], c[0] - room.min[0]),
-                ([0.0, 1.0, 0.0], room.max[1] - c[1]),
-                ([0.0, -1.0, 0.0], c[1] - room.min[1]),
-            ] {
-                let t = nearest(&floor.shapes, &Ray::towards(c, dir));
-                assert!(
-                    (t - expect).abs() < 1e-6,
-                    "seed {seed}: {} {dir:?}: {t} vs {expect}",
-                    room.kind
-                );
-            }
         }
     }
 }
 
 #[test]
 fn office_floor_scans_come_a_few_per_room_from_rooms_of_every_kind() {
+    let school = sim(SceneKind::School, 3, |p| {
+        p.scans = 3;
+        p.scans_per_room = 1;
+        p.lidar = Some(LidarParams::with_beams(16).unwrap());
+    });
+    assert_eq!(school.len(), 3 * SCHOOL_KINDS.len());
+    for kind in SCHOOL_KINDS {
+        assert_eq!(
+            (0..school.len())
+                .filter(|&i| school.label(i) == kind)
+                .count(),
+            3
+        );
+    }
     let s = sim(SceneKind::OfficeFloor, 3, |p| {
         p.scans = 4;
         p.scans_per_room = 2;
@@ -260,5 +280,8 @@ fn simulate_takes_a_sensor_a_height_and_the_office_floor() {
             .args(["simulate", "--scene", "hospital", "-o"])
             .arg(&dir),
     );
-    assert!(err.contains("office-floor"), "{err}");
+    assert!(
+        err.contains("office-floor") && err.contains("school"),
+        "{err}"
+    );
 }
