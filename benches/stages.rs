@@ -6,7 +6,7 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
-use placecat::descriptor::{alignment, histogram, ndt_grid, shape};
+use placecat::descriptor::{alignment, histogram, ndt_grid, shape, PartKind, PartValues};
 use placecat::io::write::{self, PlyEncoding};
 use placecat::io::{read_scan, ReadLimits};
 use placecat::sim::{LidarParams, SceneKind, SimParams, Simulation};
@@ -165,6 +165,83 @@ fn describe_stages(c: &mut Criterion) {
     g.finish();
 }
 
+/// The extra descriptor parts (issue 18) beside the NDT histogram, on the
+/// same scans in the same run: `ndt_histogram` is `describe` with the
+/// paper's indoor parameters, each part its own `PartKind::describe`.
+fn describe_parts(c: &mut Criterion) {
+    let p = DescriptorParams::indoor();
+    let mut g = c.benchmark_group("parts");
+    let room = read_scan(
+        &std::fs::read(format!("{REAL}/pcl_room/room_scan1.pcd")).unwrap(),
+        "a.pcd",
+        &ReadLimits::default(),
+    )
+    .unwrap()
+    .points;
+    for (label, pts) in [("real_room_112k", room), ("sim_100k", sim_scan(64, 1800))] {
+        g.throughput(Throughput::Elements(pts.len() as u64));
+        g.bench_with_input(BenchmarkId::new("ndt_histogram", label), &pts, |b, x| {
+            b.iter(|| describe(x, &p).unwrap().total())
+        });
+        for kind in PartKind::ALL {
+            let name = serde_json::to_value(kind).unwrap();
+            let id = name.as_str().unwrap().to_string();
+            g.bench_with_input(BenchmarkId::new(id, label), &pts, |b, x| {
+                b.iter(|| kind.describe(black_box(x)).len())
+            });
+        }
+    }
+    g.finish();
+    // The distance: the paper's Delta matrix against the combined one of
+    // indoor_plus (the NDT plus every part) on the same scans.
+    let mut g = c.benchmark_group("parts_distance");
+    let n = 500;
+    let plus = DescriptorParams::indoor_plus();
+    let mut ds = many_descriptors(n);
+    let mut r = placecat::rng::rng(7);
+    for d in &mut ds {
+        d.parts = plus
+            .parts
+            .iter()
+            .map(|part| PartValues {
+                kind: part.kind,
+                values: random_channels(part.kind, &mut r),
+            })
+            .collect();
+    }
+    g.throughput(Throughput::Elements((n * (n - 1) / 2) as u64));
+    g.bench_with_input(BenchmarkId::new("delta_matrix_paper", n), &ds, |b, x| {
+        let o = DistanceOptions::from(&p);
+        let plain: Vec<Descriptor> = x
+            .iter()
+            .cloned()
+            .map(|mut d| {
+                d.parts.clear();
+                d
+            })
+            .collect();
+        b.iter(|| delta_matrix(&plain, o).unwrap().n)
+    });
+    g.bench_with_input(
+        BenchmarkId::new("delta_matrix_indoor_plus", n),
+        &ds,
+        |b, x| b.iter(|| delta_matrix(x, DistanceOptions::from(&plus)).unwrap().n),
+    );
+    g.finish();
+}
+
+/// A part's channels filled with random unit-sum histograms.
+fn random_channels(kind: PartKind, r: &mut impl rand::Rng) -> Vec<f32> {
+    kind.channels()
+        .iter()
+        .flat_map(|&bins| {
+            let h: Vec<f32> = (0..bins).map(|_| r.random::<f32>()).collect();
+            let s: f32 = h.iter().sum();
+            h.into_iter().map(move |v| v / s)
+        })
+        .collect()
+}
+
 fn many_descriptors(n: usize) -> Vec<Descriptor> {
     placecat::sim::reused_descriptors(n, &DescriptorParams::indoor(), 5).unwrap()
 }
@@ -200,5 +277,5 @@ fn distances_and_clustering(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group! { name = benches; config = config(); targets = read, describe_stages, distances_and_clustering }
+criterion_group! { name = benches; config = config(); targets = read, describe_stages, describe_parts, distances_and_clustering }
 criterion_main!(benches);

@@ -31,6 +31,16 @@ for (const size of ['100k', '1M']) for (const fmt of ['ply_binary', 'ply_ascii']
   const floor = fmt === 'ply_binary' ? find(`${fmt}/stride_copy_floor`, size) : null;
   lines.push(`| ${fmt.replace('ply_', '')} ${size} | ${m(me.perSecond)} | ${peer ? m(peer.perSecond) : '-'} | ${floor ? m(floor.perSecond) : '-'} | ${peer ? (me.perSecond / peer.perSecond).toFixed(1) + 'x' : '-'} | ${floor ? (me.perSecond / floor.perSecond).toFixed(2) : '-'} |`);
 }
+const ndtRows = rows.filter((r) => r.group === 'parts' && r.func === 'ndt_histogram');
+if (ndtRows.length) {
+  lines.push('', '## Extra descriptor parts against the NDT histogram (docs/parts.md; same scans, same run, one core)', '', '| part | scan | median time | NDT histogram time | part / NDT |', '|---|---|---|---|---|');
+  for (const ndt of ndtRows) for (const r of rows.filter((x) => x.group === 'parts' && x.param === ndt.param && x.func !== 'ndt_histogram')) {
+    lines.push(`| ${r.func} | ${r.param} | ${(r.seconds * 1e3).toFixed(2)} ms | ${(ndt.seconds * 1e3).toFixed(2)} ms | ${(r.seconds / ndt.seconds).toFixed(2)} |`);
+  }
+  const paper = rows.find((r) => r.group === 'parts_distance' && r.func === 'delta_matrix_paper');
+  const plus = rows.find((r) => r.group === 'parts_distance' && r.func === 'delta_matrix_indoor_plus');
+  if (paper && plus) lines.push('', `Delta matrix of ${paper.param} scans (all cores): paper ${(paper.seconds * 1e3).toFixed(1)} ms, indoor_plus ${(plus.seconds * 1e3).toFixed(1)} ms (${(plus.seconds / paper.seconds).toFixed(2)}x).`);
+}
 lines.push('', '## Every stage', '', '| benchmark | median time | throughput |', '|---|---|---|');
 for (const r of rows) {
   const unit = r.group === 'cluster' && r.func === 'delta_matrix' ? 'pairs/s' : r.group === 'cluster' ? 'scans/s' : 'points/s';

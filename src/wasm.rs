@@ -102,8 +102,13 @@ fn descriptor_from_json(json: &str) -> crate::Result<Descriptor> {
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_NAMES: &'static str = r#"
-/** A parameter preset (paper Tab. II: indoor, outdoor; docs/design.md#variants: indoor_bands; the public C++ code's settings: perception_oru). */
-export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru";
+/** A parameter preset (paper Tab. II: indoor, outdoor; docs/design.md#variants: indoor_bands; the public C++ code's settings: perception_oru; with the extra parts of docs/parts.md: indoor_plus, warehouse, outdoor_plus, free_space). `presetNotes()` gives each one's one-line explanation. */
+export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru" | "indoor_plus" | "warehouse" | "outdoor_plus" | "free_space";
+/** A preset's name and its one-line explanation. */
+export interface PresetNote {
+    name: Preset;
+    note: string;
+}
 /** k-means seeding: random scans, stride ("deterministic": scan i*n/k), or k-means++. */
 export type Seeding = "random" | "stride" | "deterministic" | "plusplus";
 /** One simulated scan: its file name, true kind, pose and binary PLY bytes. */
@@ -127,12 +132,23 @@ pub fn version() -> String {
 }
 
 /// Descriptor parameters of a preset (`indoor`, `outdoor`, `indoor_bands`,
-/// `perception_oru`) as a plain object whose fields can be changed.
+/// `perception_oru`, `indoor_plus`, `warehouse`, `outdoor_plus`,
+/// `free_space`) as a plain object whose fields can be changed.
 #[wasm_bindgen(js_name = presetParams, unchecked_return_type = "Required<DescriptorParams>")]
 pub fn preset_params(
     #[wasm_bindgen(unchecked_param_type = "Preset")] name: &str,
 ) -> WasmResult<JsValue> {
     to_js(&DescriptorParams::preset(name)?)
+}
+
+/// Every preset with its one-line explanation, in the order of the menu.
+#[wasm_bindgen(js_name = presetNotes, unchecked_return_type = "PresetNote[]")]
+pub fn preset_notes() -> WasmResult<JsValue> {
+    let notes: Vec<serde_json::Value> = crate::descriptor::PRESET_NOTES
+        .iter()
+        .map(|(name, note)| serde_json::json!({ "name": name, "note": note }))
+        .collect();
+    to_js(&notes)
 }
 
 /// Parameters from a (possibly partial) object: missing fields take the

@@ -16,7 +16,8 @@ pub mod shape;
 pub mod slice;
 
 pub use params::{
-    preset_names, Alignment, DescriptorParams, Metric, Normalisation, PRESETS, PRESET_NOTES,
+    preset_names, preset_note, Alignment, DescriptorParams, Metric, Normalisation, PRESETS,
+    PRESET_NOTES,
 };
 pub use parts::{Part, PartKind, PartValues};
 

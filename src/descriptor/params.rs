@@ -100,21 +100,32 @@ fn is_one(w: &f64) -> bool {
     *w == 1.0
 }
 
+/// Parts from (kind, weight) pairs.
+fn parts(list: &[(PartKind, f64)]) -> Vec<Part> {
+    list.iter()
+        .map(|&(kind, weight)| Part { kind, weight })
+        .collect()
+}
+
 /// A preset's constructor.
 pub type Preset = fn() -> DescriptorParams;
 
 /// Every parameter preset, by name: the one list. The CLI's help names
 /// them from here; a test holds the JS `Preset` type and the README to it.
-pub const PRESETS: [(&str, Preset); 4] = [
+pub const PRESETS: [(&str, Preset); 8] = [
     ("indoor", DescriptorParams::indoor),
     ("outdoor", DescriptorParams::outdoor),
     ("indoor_bands", DescriptorParams::indoor_bands),
     ("perception_oru", DescriptorParams::perception_oru),
+    ("indoor_plus", DescriptorParams::indoor_plus),
+    ("warehouse", DescriptorParams::warehouse),
+    ("outdoor_plus", DescriptorParams::outdoor_plus),
+    ("free_space", DescriptorParams::free_space),
 ];
 
 /// One line per preset saying what it is for, in the order of [`PRESETS`]
 /// (the CLI's help, the page's menu and the wasm API show these).
-pub const PRESET_NOTES: [(&str, &str); 4] = [
+pub const PRESET_NOTES: [(&str, &str); 8] = [
     ("indoor", "the paper's indoor parameters (Tab. II)"),
     ("outdoor", "the paper's outdoor parameters (Tab. II)"),
     (
@@ -125,7 +136,31 @@ pub const PRESET_NOTES: [(&str, &str); 4] = [
         "perception_oru",
         "close to the public C++ implementation, for comparison",
     ),
+    (
+        "indoor_plus",
+        "indoor, plus range/height distributions, the free-space slice, shape functions and ring heights: room kinds",
+    ),
+    (
+        "warehouse",
+        "indoor, plus the free-space slice and ring heights: halls of different size and height",
+    ),
+    (
+        "outdoor_plus",
+        "outdoor, plus the free-space slice and ring heights",
+    ),
+    (
+        "free_space",
+        "the free-space slice and ring heights alone, no NDT histogram: size and shape of the space only",
+    ),
 ];
+
+/// The one line of [`PRESET_NOTES`] for a preset name.
+pub fn preset_note(name: &str) -> Option<&'static str> {
+    PRESET_NOTES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, t)| *t)
+}
 
 /// The names of [`PRESETS`], in order.
 pub fn preset_names() -> Vec<&'static str> {
@@ -214,6 +249,52 @@ impl DescriptorParams {
                 (7.0, Some(10.0)),
             ],
             height_bands: vec![-0.8, 0.3, 1.5],
+            ..Self::indoor()
+        }
+    }
+
+    /// The paper's indoor descriptor plus every extra part (issue 18). The
+    /// weights come from the development seeds only (docs/parts.md).
+    pub fn indoor_plus() -> Self {
+        DescriptorParams {
+            preset: "indoor_plus".into(),
+            parts: parts(&[
+                (PartKind::HeightRange, 5.0),
+                (PartKind::Slice, 1.2),
+                (PartKind::Esf, 2.6),
+                (PartKind::Ring, 5.0),
+            ]),
+            ..Self::indoor()
+        }
+    }
+
+    /// The paper's indoor descriptor plus the free-space slice and ring
+    /// heights, which see a hall's size and height (docs/parts.md).
+    pub fn warehouse() -> Self {
+        DescriptorParams {
+            preset: "warehouse".into(),
+            parts: parts(&[(PartKind::Slice, 5.0), (PartKind::Ring, 5.0)]),
+            ..Self::indoor()
+        }
+    }
+
+    /// The paper's outdoor descriptor plus the free-space slice and ring
+    /// heights (docs/parts.md).
+    pub fn outdoor_plus() -> Self {
+        DescriptorParams {
+            preset: "outdoor_plus".into(),
+            parts: parts(&[(PartKind::Slice, 5.0), (PartKind::Ring, 5.0)]),
+            ..Self::outdoor()
+        }
+    }
+
+    /// The free-space slice and ring heights alone: the NDT histogram is
+    /// still made (and checked) but weighs nothing (docs/parts.md).
+    pub fn free_space() -> Self {
+        DescriptorParams {
+            preset: "free_space".into(),
+            ndt_weight: 0.0,
+            parts: parts(&[(PartKind::Slice, 10.0), (PartKind::Ring, 10.0)]),
             ..Self::indoor()
         }
     }
@@ -380,6 +461,8 @@ mod tests {
         assert!(include_str!("../wasm.rs").contains(&ts), "{ts}");
         let md = format!("[--preset {}]", names.join("|"));
         assert!(include_str!("../../README.md").contains(&md), "{md}");
+        let noted: Vec<&str> = PRESET_NOTES.iter().map(|(n, _)| *n).collect();
+        assert_eq!(noted, names);
         let e = DescriptorParams::preset("attic").unwrap_err().to_string();
         assert!(e.contains(&names.join(", ")), "{e}");
     }

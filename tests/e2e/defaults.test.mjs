@@ -106,7 +106,8 @@ test('ten scans of one place are one category, not five', async () => {
 test('the warehouse demo: 300 scans of an AGV route, described with the indoor preset, drawn as a site', async () => {
   await afterRun(h.page, () => h.page.click('#demo-warehouse'), 300000);
   assert.match(await text('#progress-text'), /^300 \/ 300 scans/);
-  // There is no warehouse preset: the select holds indoor, as the paper's ArlaWarehouse.
+  // The demo keeps the paper's indoor preset, as the paper's ArlaWarehouse
+  // (the `warehouse` preset of docs/parts.md is the user's choice).
   assert.equal(await h.page.inputValue('#preset'), 'indoor');
   assert.match(await text('#preset-note'), /^indoor suggested: \d+ % of the points of scan_00000\.ply lie beyond 15 m \(under 14 %/);
   assert.match(await text('#map-caption'), /^Trajectory map/);

@@ -13,12 +13,13 @@ use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// `--preset`'s help, naming every preset of the table.
+/// `--preset`'s help, naming every preset of the table with its note.
 fn preset_help() -> String {
-    format!(
-        "Parameter preset: {}.",
-        placecat::descriptor::preset_names().join(", ")
-    )
+    let notes: Vec<String> = placecat::descriptor::PRESET_NOTES
+        .iter()
+        .map(|(name, note)| format!("{name} ({note})"))
+        .collect();
+    format!("Parameter preset: {}.", notes.join("; "))
 }
 
 #[derive(Parser)]
