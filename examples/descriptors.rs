@@ -2,9 +2,12 @@
 //! descriptor preset against the paper's, on several scene families and
 //! sensors, with seeds fixed beforehand in docs/seeds.md.
 //!
+//!     cargo run --release --example descriptors -- --dev   # dev seeds -> docs/descriptors-dev.json
 //!     cargo run --release --example descriptors            # test seeds: the report
-//!     cargo run --release --example descriptors -- --dev   # dev seeds, to stdout only
-//!     ... -- --dev --only office   # only the families whose name holds `office`
+//!     ... -- --only office   # dev seeds of the families whose name holds `office`, to stdout
+//!
+//! The dev run chooses each family's new preset and is kept in its own
+//! file, so that the test run (which reads it) stays near 15 minutes.
 //!
 //! Every preset of `placecat::descriptor::PRESETS` is run, so a preset
 //! added there joins by itself. For each family x sensor x preset x seed:
@@ -24,7 +27,7 @@ use placecat::eval::evaluate;
 use placecat::sim::{Buildings, LidarParams, SceneKind, SimParams, Simulation};
 use placecat::*;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 
 #[path = "common/real.rs"]
@@ -91,12 +94,12 @@ const ALL_SENSORS: &[Sensor] = &[
     Sensor::Height(0.3),
     Sensor::Height(1.8),
 ];
-/// A subsample of the grid, to keep the run's time: the sparsest sensor
-/// and the lowest mount.
-const FEW_SENSORS: &[Sensor] = &[Sensor::Beams(16), Sensor::Height(0.3)];
+/// Subsamples of the grid for the other families, to keep the run's
+/// time: the sparsest sensor, the lowest mount.
 const SPARSE_SENSOR: &[Sensor] = &[Sensor::Beams(16)];
+const LOW_SENSOR: &[Sensor] = &[Sensor::Height(0.3)];
 /// The warehouse also with the 32-beam sensor of issue 18's table.
-const WAREHOUSE_SENSORS: &[Sensor] = &[Sensor::Beams(16), Sensor::Beams(32)];
+const WAREHOUSE_SENSORS: &[Sensor] = &[Sensor::Beams(32)];
 
 /// The families. Scan counts are smaller than `placecat simulate`'s
 /// defaults (indoor 12 a kind in rooms of 3, routes 150 scans) to keep the
@@ -109,7 +112,7 @@ fn families() -> Vec<Family> {
         scans: KIND_SCANS,
         scans_per_room: ROOM_SCANS,
         paper: "indoor",
-        sensors: FEW_SENSORS,
+        sensors: SPARSE_SENSOR,
     };
     vec![
         Family {
@@ -118,11 +121,12 @@ fn families() -> Vec<Family> {
         },
         indoor("indoor (many buildings)", Buildings::Many),
         Family {
-            sensors: SPARSE_SENSOR,
+            sensors: &[],
             ..indoor("indoor (varied plans)", Buildings::Varied)
         },
         Family {
             scene: SceneKind::OfficeFloor,
+            sensors: LOW_SENSOR,
             ..indoor("office floor", Buildings::One)
         },
         Family {
@@ -165,7 +169,7 @@ fn sim_params(f: &Family, sensor: Sensor, seed: u64) -> Res<SimParams> {
 }
 
 /// One preset's figures on one simulated set.
-#[derive(Serialize, Clone, Copy, Default)]
+#[derive(Serialize, Deserialize, Clone, Copy, Default)]
 struct Figures {
     stride_accuracy: f64,
     stride_ari: f64,
@@ -180,7 +184,7 @@ struct Figures {
     describe_ms: f64,
 }
 
-#[derive(Serialize)]
+#[derive(Serialize, Deserialize)]
 struct SetResult {
     family: String,
     sensor: String,
@@ -398,7 +402,43 @@ fn sets_of<'a>(all: &'a [SetResult], family: &str, sensor: &str) -> Vec<&'a SetR
         .collect()
 }
 
-fn compute(dev_only: bool, only: Option<&str>) -> Res<Report> {
+/// The development run: the presets it ran and its sets.
+#[derive(Serialize, Deserialize)]
+struct DevRun {
+    presets: Vec<String>,
+    sets: Vec<SetResult>,
+    seconds: f64,
+}
+
+fn dev_run(only: Option<&str>) -> Res<DevRun> {
+    let t0 = std::time::Instant::now();
+    let names = placecat::descriptor::preset_names();
+    let presets: Vec<DescriptorParams> = names
+        .iter()
+        .map(|n| DescriptorParams::preset(n))
+        .collect::<placecat::Result<_>>()?;
+    let mut sets = vec![];
+    for f in families()
+        .iter()
+        .filter(|f| only.is_none_or(|o| f.name.contains(o)))
+    {
+        for &seed in &DEV_SEEDS {
+            eprintln!(
+                "dev {} seed {seed} ({:.0} s)",
+                f.name,
+                t0.elapsed().as_secs_f64()
+            );
+            sets.push(run_set(f, Sensor::Own, seed, &presets)?);
+        }
+    }
+    Ok(DevRun {
+        presets: names.iter().map(|n| n.to_string()).collect(),
+        sets,
+        seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+fn compute(dev_run: DevRun, dev_only: bool) -> Res<Report> {
     let t0 = std::time::Instant::now();
     let names = placecat::descriptor::preset_names();
     let presets: Vec<DescriptorParams> = names
@@ -410,31 +450,35 @@ fn compute(dev_only: bool, only: Option<&str>) -> Res<Report> {
         .filter(|n| !PAPER_PRESETS.contains(n))
         .map(|n| n.to_string())
         .collect();
+    if dev_run.presets != names {
+        return Err(format!(
+            "docs/descriptors-dev.json holds presets {:?}, there are {names:?}: run with --dev first",
+            dev_run.presets
+        )
+        .into());
+    }
+    let dev = dev_run.sets;
     let fams: Vec<Family> = families()
         .into_iter()
-        .filter(|f| only.is_none_or(|o| f.name.contains(o)))
+        .filter(|f| dev.iter().any(|s| s.family == f.name))
         .collect();
-    let mut dev = vec![];
-    for f in &fams {
-        for &seed in &DEV_SEEDS {
-            eprintln!(
-                "dev {} seed {seed} ({:.0} s)",
-                f.name,
-                t0.elapsed().as_secs_f64()
-            );
-            dev.push(run_set(f, Sensor::Own, seed, &presets)?);
-        }
-    }
     let choices = fams
         .iter()
         .map(|f| {
             let sets = sets_of(&dev, f.name, "own");
+            // A preset that failed on a dev set (NaN) is never chosen.
+            let score = |p: &str| {
+                let v = mean_of(&sets, p, |x| x.stride_accuracy);
+                if v.is_nan() {
+                    f64::NEG_INFINITY
+                } else {
+                    v
+                }
+            };
             let best_new = new_presets
                 .iter()
-                .max_by(|a, b| {
-                    let score = |p: &str| mean_of(&sets, p, |x| x.stride_accuracy);
-                    score(a).total_cmp(&score(b))
-                })
+                .filter(|p| score(p) > f64::NEG_INFINITY)
+                .max_by(|a, b| score(a).total_cmp(&score(b)))
                 .cloned();
             Choice {
                 family: f.name.into(),
@@ -528,7 +572,7 @@ fn render(r: &Report, notes: &str) -> Res<String> {
                 .join(", ")
         }
     )?;
-    writeln!(o, "**Method.** Families: indoor rooms of one building, of many buildings (`--buildings many`), of varied plans (`--buildings varied`: mirrored layouts, L-shaped rooms), an office floor (`--scene office-floor`: corridor, private office, meeting room, open plan, restroom; doors open into the corridor; written while the descriptors were being built, by another hand), school floors written after the descriptors were committed (`--scene school`: corridor with lockers, classroom, library, cafeteria, staff room), the warehouse and the outdoor site. No descriptor or preset was developed on the office or school floors. Indoor families: {KIND_SCANS} scans a kind, {ROOM_SCANS} per room at free spots anywhere in it ({} scans a set); routes: {ROUTE_SCANS} scans (a third of `placecat simulate`'s default). Sensors: each scene's own (128-beam OS0 indoors and in the warehouse at 1.0 to 1.4 m, 64-beam KITTI-like outdoors at 1.6 to 1.95 m); the school (the family written last) also with `--beams 16/32/64` and `--sensor-height 0.3/1.8`; rooms of many buildings and the office floor with 16 beams and at 0.3 m; varied plans and outdoors with 16 beams; the warehouse with 16 and 32 beams; rooms of one building only with their own sensor. **Subsampled** (fewer scans, not every family with every sensor) so that the whole run stays near 15 minutes on a two-core machine shared by six builds; the sets are small, so a figure moves by 1/45 (indoor) or 1/100 (routes) per scan. Measures at the true number of kinds: deterministic (stride) k-means, hierarchical k-means++ (mean of clustering seeds 0-9), accuracy and ARI; 1-NN leave-one-out with no neighbour from the scan's room (routes: none within {ROUTE_WINDOW} scans at the default density of 300 a route, i.e. within {} of the {ROUTE_SCANS} scans here). The new preset reported for a family is the one with the best stride k-means on the dev seeds with the scene's own sensor (table in section 5).\n", 5 * KIND_SCANS, (ROUTE_WINDOW * ROUTE_SCANS).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS))?;
+    writeln!(o, "**Method.** Families: indoor rooms of one building, of many buildings (`--buildings many`), of varied plans (`--buildings varied`: mirrored layouts, L-shaped rooms), an office floor (`--scene office-floor`: corridor, private office, meeting room, open plan, restroom; doors open into the corridor; written while the descriptors were being built, by another hand), school floors written after the descriptors were committed (`--scene school`: corridor with lockers, classroom, library, cafeteria, staff room), the warehouse and the outdoor site. No descriptor or preset was developed on the office or school floors. Indoor families: {KIND_SCANS} scans a kind, {ROOM_SCANS} per room at free spots anywhere in it ({} scans a set); routes: {ROUTE_SCANS} scans (a third of `placecat simulate`'s default). Sensors: each scene's own (128-beam OS0 indoors and in the warehouse at 1.0 to 1.4 m, 64-beam KITTI-like outdoors at 1.6 to 1.95 m); the school (the family written last) also with `--beams 16/32/64` and `--sensor-height 0.3/1.8`; rooms of many buildings and outdoors also with 16 beams; the office floor at 0.3 m; the warehouse with 32 beams; rooms of one building and of varied plans only with their own sensor. **Subsampled** (fewer scans, not every family with every sensor) so that the whole run stays near 15 minutes on a two-core machine shared by six builds; the sets are small, so a figure moves by 1/45 (indoor) or 1/100 (routes) per scan. Measures at the true number of kinds: deterministic (stride) k-means, hierarchical k-means++ (mean of clustering seeds 0-9), accuracy and ARI; 1-NN leave-one-out with no neighbour from the scan's room (routes: none within {ROUTE_WINDOW} scans at the default density of 300 a route, i.e. within {} of the {ROUTE_SCANS} scans here). The new preset reported for a family is the one with the best stride k-means on the dev seeds with the scene's own sensor (table in section 5).\n", 5 * KIND_SCANS, (ROUTE_WINDOW * ROUTE_SCANS).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS))?;
     writeln!(o, "## 1. The best new preset against the paper's, per family (own sensor, mean of test seeds 301-305)\n")?;
     writeln!(o, "| family | preset | stride k-means | ARI | hk-means++ | ARI | room-level 1-NN | target (stride k-means) | met |\n|---|---|---|---|---|---|---|---|---|")?;
     for c in &r.choices {
@@ -730,13 +774,21 @@ fn main() -> Res<()> {
         .iter()
         .position(|a| a == "--only")
         .and_then(|i| args.get(i + 1));
-    let report = compute(dev_only || only.is_some(), only.map(String::as_str))?;
-    let md = render(&report, NOTES)?;
-    if dev_only {
-        println!("{md}");
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let dev_path = docs.join("descriptors-dev.json");
+    if dev_only || only.is_some() {
+        let dev = dev_run(only.map(String::as_str))?;
+        if only.is_none() {
+            std::fs::write(&dev_path, serde_json::to_string_pretty(&dev)?)?;
+            eprintln!("wrote docs/descriptors-dev.json ({:.0} s)", dev.seconds);
+        }
+        println!("{}", render(&compute(dev, true)?, NOTES)?);
         return Ok(());
     }
-    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let text = std::fs::read_to_string(&dev_path)
+        .map_err(|e| format!("{}: {e} (run with --dev first)", dev_path.display()))?;
+    let report = compute(serde_json::from_str(&text)?, false)?;
+    let md = render(&report, NOTES)?;
     std::fs::write(
         docs.join("descriptors.json"),
         serde_json::to_string_pretty(&report)?,
