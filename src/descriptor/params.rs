@@ -138,7 +138,7 @@ pub const PRESET_NOTES: [(&str, &str); 8] = [
     ),
     (
         "indoor_plus",
-        "indoor, plus range/height distributions, the free-space slice, shape functions and ring heights: room kinds",
+        "indoor, plus the free-space slice, shape functions and ring heights: room kinds",
     ),
     (
         "warehouse",
@@ -253,15 +253,15 @@ impl DescriptorParams {
         }
     }
 
-    /// The paper's indoor descriptor plus every extra part (issue 18). The
-    /// weights come from the development seeds only (docs/parts.md).
+    /// The paper's indoor descriptor plus the free-space slice, shape
+    /// functions and ring heights (issue 18). The weights come from the
+    /// development seeds only (docs/parts.md).
     pub fn indoor_plus() -> Self {
         DescriptorParams {
             preset: "indoor_plus".into(),
             parts: parts(&[
-                (PartKind::HeightRange, 5.0),
-                (PartKind::Slice, 1.2),
-                (PartKind::Esf, 2.6),
+                (PartKind::Slice, 5.0),
+                (PartKind::Esf, 5.0),
                 (PartKind::Ring, 5.0),
             ]),
             ..Self::indoor()

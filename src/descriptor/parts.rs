@@ -170,6 +170,13 @@ pub fn unit_sum(hist: &mut [f32]) {
     }
 }
 
+/// The azimuth sector (of `sectors` equal ones, counted from -pi) that a
+/// point lies in.
+pub fn sector_of(p: &[f32; 3], sectors: usize) -> usize {
+    let a = p[1].atan2(p[0]) + std::f32::consts::PI;
+    ((a / std::f32::consts::TAU * sectors as f32) as usize).min(sectors - 1)
+}
+
 /// One point per occupied voxel of edge `size` (the first point seen in
 /// it), finite points only, in a fixed order. A lidar samples near
 /// surfaces far more densely than far ones; statistics of these points

@@ -13,7 +13,7 @@
 //! 45, 64 m: 11 rings), each 17 bins: empty, then the sector's largest
 //! height above the sensor from -3 m to 13 m in 1 m steps.
 
-use super::parts::soft_bin;
+use super::parts::{sector_of, soft_bin};
 use crate::cloud::is_finite;
 
 /// Ring edges (m).
@@ -39,8 +39,7 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
         let Some(ring) = EDGES.windows(2).position(|w| r >= w[0] && r < w[1]) else {
             continue;
         };
-        let a = p[1].atan2(p[0]) + std::f32::consts::PI;
-        let s = ((a / std::f32::consts::TAU * SECTORS as f32) as usize).min(SECTORS - 1);
+        let s = sector_of(p, SECTORS);
         let t = &mut top[ring * SECTORS + s];
         *t = t.max(p[2]);
     }

@@ -21,7 +21,7 @@
 //! the polygon's second moments (0 to 1); and a histogram of the beam
 //! lengths (log scale, 0.3 to 100 m, 24 bins).
 
-use super::parts::{scalar_channel, soft_bin, unit_sum};
+use super::parts::{scalar_channel, sector_of, soft_bin, unit_sum};
 use crate::cloud::is_finite;
 
 /// Bins of each channel (see the module doc).
@@ -63,8 +63,7 @@ pub fn sector_points(points: &[[f32; 3]]) -> Option<Vec<[f64; 2]>> {
         if r < MIN_RANGE {
             continue;
         }
-        let a = p[1].atan2(p[0]) + std::f32::consts::PI;
-        let s = ((a / std::f32::consts::TAU * SECTORS as f32) as usize).min(SECTORS - 1);
+        let s = sector_of(p, SECTORS);
         if far[s].is_none_or(|(best, _)| r > best) {
             far[s] = Some((r, [p[0], p[1]]));
         }
