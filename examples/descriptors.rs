@@ -5,6 +5,7 @@
 //!     cargo run --release --example descriptors -- --dev   # dev seeds -> docs/descriptors-dev.json
 //!     cargo run --release --example descriptors            # test seeds: the report
 //!     ... -- --only office   # dev seeds of the families whose name holds `office`, to stdout
+//!     ... -- --render        # docs/descriptors.md again from docs/descriptors.json
 //!
 //! The dev run chooses each family's new preset and is kept in its own
 //! file, so that the test run (which reads it) stays near 15 minutes.
@@ -14,9 +15,10 @@
 //! deterministic (stride) k-means and hierarchical k-means++ (clustering
 //! seeds 0-9) at the true number of kinds, accuracy and ARI, and 1-NN
 //! leave-one-out with no neighbour from the scan's own room (routes: none
-//! within 25 scans along the route). The best new preset of a family is
-//! chosen on the development seeds (default sensor, stride k-means) and
-//! reported on the test seeds, so the choice does not flatter it.
+//! within the stretch of 25 scans at the default 300 a route). The best
+//! new preset of a family is chosen on the development seeds (default
+//! sensor, stride k-means; of equals, the later in PRESETS) and reported on
+//! the test seeds, so the choice does not flatter it.
 //!
 //! The report is computed into plain data ([`Report`]), written as JSON,
 //! and the markdown is rendered from that data.
@@ -323,7 +325,7 @@ fn run_set(f: &Family, sensor: Sensor, seed: u64, presets: &[DescriptorParams]) 
 
 /// Real-scan retrieval: for each preset, the scans of tests/data/real
 /// whose nearest other scan is from another place.
-#[derive(Serialize)]
+#[derive(Serialize, Deserialize)]
 struct RealRow {
     preset: String,
     scans: usize,
@@ -364,7 +366,7 @@ fn real_rows(presets: &[DescriptorParams]) -> Res<Vec<RealRow>> {
     Ok(rows)
 }
 
-#[derive(Serialize)]
+#[derive(Serialize, Deserialize)]
 struct Report {
     presets: Vec<String>,
     new_presets: Vec<String>,
@@ -376,7 +378,7 @@ struct Report {
     seconds: f64,
 }
 
-#[derive(Serialize)]
+#[derive(Serialize, Deserialize)]
 struct Choice {
     family: String,
     paper: String,
@@ -552,7 +554,7 @@ fn target(family: &str, paper: f64) -> (String, f64) {
 fn render(r: &Report, notes: &str) -> Res<String> {
     let mut o = String::new();
     writeln!(o, "# Place descriptors beyond the paper (issue 18)\n")?;
-    writeln!(o, "Regenerate with `cargo run --release --example descriptors` (writes this file and `descriptors.json`; {:.0} s for this run). Seeds fixed in [seeds.md](seeds.md) before any run: development 1, 2, 3; test 301 to 305. Every figure below is on the test seeds, each run once, whatever it showed, unless it says dev.\n", r.seconds)?;
+    writeln!(o, "Regenerate with `cargo run --release --example descriptors -- --dev` (the development seeds, `descriptors-dev.json`) then `cargo run --release --example descriptors` (the test seeds: this file and `descriptors.json`; {:.0} s for the test run on a two-core machine shared with five other builds; `-- --render` renders this file again from `descriptors.json`). Seeds fixed in [seeds.md](seeds.md) before any run: development 1, 2, 3; test 301 to 305. Every figure below is on the test seeds, each run once, whatever it showed, unless it says dev.\n", r.seconds)?;
     writeln!(
         o,
         "Presets run: {}. The paper's (and placecat's before this issue): {}. New: {}.\n",
@@ -765,7 +767,16 @@ fn render_failures(o: &mut String, r: &Report) -> std::fmt::Result {
 
 /// What did not work, in words, written after the test run (the figures
 /// behind it are in the tables; the list after it is computed).
-const NOTES: &str = "";
+const NOTES: &str = "Written after the one test run (presets of the `desc` branch at commit 2eca927, merged here; the figures are in the tables above).
+
+- **The indoor target is not met on the floors written for this evaluation.** Office floor: the chosen `indoor_plus` gives stride k-means 74.2 % (the paper's `indoor` 68.0 %), at 0.3 m 66.7 % (55.1 %). School, the family written after the descriptors were committed: 74.2 % (63.6 %); over its six sensors `indoor_plus` gives 74 to 83 %, the paper's 64 to 74 %. Better than the paper's everywhere there, and still 2 to 11 points short of 85 %. On the three room families the new presets were built on (one building, many buildings, varied plans) they reach 91 to 97 %, and the paper's 85 to 93 % on these smaller sets: the gap between those families and the floors is the honest measure of how far the new parts generalise.
+- **Warehouse halls: stride k-means stays at 65 to 72 % for every preset but `indoor_bands` (78.4 %)** (chosen new 71.0 %, paper 68.0 %; 32 beams 71.4 % against 60.0 %), far from 95 %. Hierarchical k-means++ with the new presets reaches 91 to 98 % on the same Delta (`indoor_plus` 96.5 %, 32 beams 97.5 %; paper 63.7 %; only `free_space` at 32 beams falls to 71.4 %): the new parts do separate the halls, but deterministic k-means' stride seeding does not find that split. The target, stated for stride k-means, is missed.
+- **Room-level 1-NN got worse in two places**: warehouse 95.8 % against 98.6 % (`indoor_plus` vs `indoor`), rooms of many buildings 90.7 % against 92.0 %. On the office floor it stays where the paper's is (66.2 % against 65.8 %), on the school 77.8 % against 76.4 %.
+- **The choice on the development seeds cost some points once**: for rooms of one building the dev seeds chose `free_space` (94.2 % on test), while `indoor_plus` gave 97.3 % on the test seeds. The chosen one is what section 1 reports.
+- **`free_space` alone** (the free-space slice without the NDT histogram's full weight) is never the best on the floors: 63.1 % on the school, as the paper's preset, 69.8 % on the office floor.
+- **`outdoor` and `outdoor_plus` cannot describe most indoor scans** (no voxel in their far range intervals): n/a on every set of the three room families and on 9 of the 10 office-floor sets; on the school's larger rooms they describe 27 of 30 sets and rank below `indoor_plus` there.
+- **Small sets**: 45 scans a set indoors (one scan moves a figure by 2.2 points), 100 along a route; means over five test seeds. Differences of two or three points between presets are within that noise.
+";
 
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().collect();
@@ -783,6 +794,15 @@ fn main() -> Res<()> {
             eprintln!("wrote docs/descriptors-dev.json ({:.0} s)", dev.seconds);
         }
         println!("{}", render(&compute(dev, true)?, NOTES)?);
+        return Ok(());
+    }
+    if args.iter().any(|a| a == "--render") {
+        let path = docs.join("descriptors.json");
+        let text =
+            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let report: Report = serde_json::from_str(&text)?;
+        std::fs::write(docs.join("descriptors.md"), render(&report, NOTES)?)?;
+        eprintln!("rendered docs/descriptors.md from docs/descriptors.json");
         return Ok(());
     }
     let text = std::fs::read_to_string(&dev_path)
