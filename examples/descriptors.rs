@@ -412,13 +412,19 @@ struct DevRun {
     seconds: f64,
 }
 
-fn dev_run(only: Option<&str>) -> Res<DevRun> {
-    let t0 = std::time::Instant::now();
+/// Every preset of PRESETS: names and parameters.
+fn all_presets() -> Res<(Vec<&'static str>, Vec<DescriptorParams>)> {
     let names = placecat::descriptor::preset_names();
-    let presets: Vec<DescriptorParams> = names
+    let presets = names
         .iter()
         .map(|n| DescriptorParams::preset(n))
         .collect::<placecat::Result<_>>()?;
+    Ok((names, presets))
+}
+
+fn dev_run(only: Option<&str>) -> Res<DevRun> {
+    let t0 = std::time::Instant::now();
+    let (names, presets) = all_presets()?;
     let mut sets = vec![];
     for f in families()
         .iter()
@@ -442,11 +448,7 @@ fn dev_run(only: Option<&str>) -> Res<DevRun> {
 
 fn compute(dev_run: DevRun, dev_only: bool) -> Res<Report> {
     let t0 = std::time::Instant::now();
-    let names = placecat::descriptor::preset_names();
-    let presets: Vec<DescriptorParams> = names
-        .iter()
-        .map(|n| DescriptorParams::preset(n))
-        .collect::<placecat::Result<_>>()?;
+    let (names, presets) = all_presets()?;
     let new_presets: Vec<String> = names
         .iter()
         .filter(|n| !PAPER_PRESETS.contains(n))
