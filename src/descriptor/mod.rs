@@ -1,7 +1,7 @@
 //! The NDT-histogram appearance descriptor (docs/design.md#descriptor):
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices; and optional extra [`parts`] beside it (issue
-//! 18): [`height_range`], [`slice`], [`esf`], [`ring`].
+//! 18): [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`].
 
 pub mod alignment;
 pub mod directions;

@@ -7,7 +7,7 @@
 //! channel that holds one scalar feature (soft-binned, see [`soft_bin`])
 //! compares as the absolute difference of the feature over its range.
 //!
-//! The parts: [`height_range`], [`slice`], [`esf`], [`ring`].
+//! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`].
 
 use super::{esf, height_range, ring, slice};
 use crate::cloud::is_finite;
@@ -24,7 +24,7 @@ pub const MAX_PARTS: usize = 4;
 pub enum PartKind {
     /// Distributions of horizontal range and of height ([`height_range`]).
     HeightRange,
-    /// Geometry of the free-space polygon around the sensor ([`slice`]).
+    /// Geometry of the free-space polygon around the sensor ([`slice`](mod@slice)).
     Slice,
     /// Shape-function histograms of point pairs and triples ([`esf`]).
     Esf,
