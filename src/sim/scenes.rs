@@ -35,25 +35,32 @@ pub fn room_shell(x0: f64, y0: f64, l: f64, w: f64, h: f64) -> Vec<Shape> {
 /// about (x, y). Parts are boxes given by local centre, footprint, bottom
 /// height and height.
 #[derive(Clone, Copy)]
-struct Frame {
-    x: f64,
-    y: f64,
-    yaw: f64,
+pub(crate) struct Frame {
+    pub(crate) x: f64,
+    pub(crate) y: f64,
+    pub(crate) yaw: f64,
 }
 
 impl Frame {
-    fn at(x: f64, y: f64, yaw: f64) -> Frame {
+    pub(crate) fn at(x: f64, y: f64, yaw: f64) -> Frame {
         Frame { x, y, yaw }
     }
     /// A local point in room coordinates.
-    fn point(&self, local: [f64; 2]) -> [f64; 2] {
+    pub(crate) fn point(&self, local: [f64; 2]) -> [f64; 2] {
         let (s, c) = self.yaw.sin_cos();
         [
             self.x + c * local[0] - s * local[1],
             self.y + s * local[0] + c * local[1],
         ]
     }
-    fn part(&self, out: &mut Vec<Shape>, centre: [f64; 2], size: [f64; 2], z0: f64, h: f64) {
+    pub(crate) fn part(
+        &self,
+        out: &mut Vec<Shape>,
+        centre: [f64; 2],
+        size: [f64; 2],
+        z0: f64,
+        h: f64,
+    ) {
         let [x, y] = self.point(centre);
         out.push(Shape::OrientedBox {
             centre: [x, y, z0 + h / 2.0],
@@ -65,7 +72,7 @@ impl Frame {
 
 /// An office chair centred at (x, y) facing `yaw`: five-star base, column,
 /// seat and back.
-fn chair(out: &mut Vec<Shape>, x: f64, y: f64, yaw: f64) {
+pub(crate) fn chair(out: &mut Vec<Shape>, x: f64, y: f64, yaw: f64) {
     let f = Frame::at(x, y, yaw);
     f.part(out, [0.0, 0.0], [0.6, 0.06], 0.05, 0.05);
     f.part(out, [0.0, 0.0], [0.06, 0.6], 0.05, 0.05);
@@ -75,7 +82,7 @@ fn chair(out: &mut Vec<Shape>, x: f64, y: f64, yaw: f64) {
 }
 
 /// A table or desk in a frame: top and two side panels (or legs).
-fn table(out: &mut Vec<Shape>, f: &Frame, centre: [f64; 2], size: [f64; 2], h: f64) {
+pub(crate) fn table(out: &mut Vec<Shape>, f: &Frame, centre: [f64; 2], size: [f64; 2], h: f64) {
     f.part(out, centre, size, h - 0.03, 0.03);
     for side in [-1.0, 1.0] {
         let x = centre[0] + side * (size[0] / 2.0 - 0.03);
@@ -86,7 +93,14 @@ fn table(out: &mut Vec<Shape>, f: &Frame, centre: [f64; 2], size: [f64; 2], h: f
 /// A bookcase against a wall: carcass, `levels` shelves and books of
 /// uneven depth and height on each shelf (a filled case is not a flat
 /// face). Local x along the wall, y out of the wall.
-fn bookcase(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, f: &Frame, x0: f64, len: f64, h: f64) {
+pub(crate) fn bookcase(
+    out: &mut Vec<Shape>,
+    r: &mut ChaCha8Rng,
+    f: &Frame,
+    x0: f64,
+    len: f64,
+    h: f64,
+) {
     let depth = 0.32;
     let levels = ((h / 0.34).floor() as usize).max(2);
     f.part(out, [x0 + len / 2.0, 0.01], [len, 0.02], 0.0, h);

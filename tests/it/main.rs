@@ -26,6 +26,7 @@ mod properties;
 mod readers;
 mod readme;
 mod real_data;
+mod scene_families;
 mod simulator;
 mod survey;
 mod untrusted_json;

@@ -9,7 +9,7 @@ use placecat::cluster::{
 };
 use placecat::io::csv;
 use placecat::io::write::{self, PlyEncoding};
-use placecat::sim::{SceneKind, SimParams, Simulation};
+use placecat::sim::{LidarParams, SceneKind, SimParams, Simulation};
 use placecat::{Error, Result};
 use rayon::prelude::*;
 use serde_json::{json, Value};
@@ -378,11 +378,31 @@ pub fn sweep(descriptors: &Path, a: &SweepArgs, output: Option<&Path>) -> Result
     Ok(ExitCode::SUCCESS)
 }
 
+/// Sensor and sampling options of `placecat simulate`.
+#[derive(clap::Args)]
+pub struct SensorArgs {
+    /// The sensor by beam count: 16 (VLP-16, +-15 deg), 32 (HDL-32E,
+    /// -30.7..+10.7 deg), 64 (OS1-64, +-22.5 deg) or 128 (OS0-128, +-45
+    /// deg). Default: the scene's own (128 indoors, a 64-beam KITTI-like
+    /// one outdoors).
+    #[arg(long)]
+    beams: Option<usize>,
+    /// The sensor's height above the floor or ground (m), e.g. 0.3 for a
+    /// small robot, 1.8 for a car roof. Default: the scene's own.
+    #[arg(long)]
+    sensor_height: Option<f64>,
+    /// indoor, office-floor, school: scans taken in each room (default 5
+    /// indoor, 3 on office and school floors).
+    #[arg(long)]
+    scans_per_room: Option<usize>,
+}
+
 pub fn simulate(
     scene: &str,
     seed: u64,
     scans: Option<usize>,
     buildings: &str,
+    sensor: &SensorArgs,
     dir: &Path,
 ) -> Result<ExitCode> {
     if super::is_stdout(dir) {
@@ -396,6 +416,11 @@ pub fn simulate(
     if let Some(n) = scans {
         p.scans = n;
     }
+    if let Some(n) = sensor.scans_per_room {
+        p.scans_per_room = n;
+    }
+    p.lidar = sensor.beams.map(LidarParams::with_beams).transpose()?;
+    p.sensor_height = sensor.sensor_height;
     let sim = Simulation::new(&p)?;
     std::fs::create_dir_all(dir).map_err(|e| Error::from(e).in_file(dir.display().to_string()))?;
     let bar = progress::bar(sim.len() as u64, "simulating");

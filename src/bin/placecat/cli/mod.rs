@@ -123,7 +123,7 @@ enum Command {
     },
     /// Simulate lidar scans with ground truth: PLY scans, poses, labels.csv.
     Simulate {
-        /// indoor, warehouse, outdoor.
+        /// indoor, warehouse, outdoor, office-floor, school.
         #[arg(long)]
         scene: String,
         /// Seeds the scene, the route and the sensor noise.
@@ -134,9 +134,12 @@ enum Command {
         scans: Option<usize>,
         /// indoor: `one` building (rooms of a kind share a plan, the
         /// default) or `many` (every room drawn over its kind's whole size
-        /// range; harder).
+        /// range; harder) or `varied` (as many, with mirrored layouts and
+        /// L-shaped rooms).
         #[arg(long, default_value = "one")]
         buildings: String,
+        #[command(flatten)]
+        sensor: cluster::SensorArgs,
         /// The folder to write the scans, poses.txt, poses_tum.txt and
         /// labels.csv into (created if missing).
         #[arg(short, long)]
@@ -289,8 +292,9 @@ pub fn main() -> ExitCode {
             seed,
             scans,
             buildings,
+            sensor,
             output,
-        } => cluster::simulate(&scene, seed, scans, &buildings, &output),
+        } => cluster::simulate(&scene, seed, scans, &buildings, &sensor, &output),
         Command::Distances {
             descriptors,
             output,

@@ -1,0 +1,824 @@
+//! Writes docs/descriptors.md and docs/descriptors.json (issue 18): every
+//! descriptor preset against the paper's, on several scene families and
+//! sensors, with seeds fixed beforehand in docs/seeds.md.
+//!
+//!     cargo run --release --example descriptors -- --dev   # dev seeds -> docs/descriptors-dev.json
+//!     cargo run --release --example descriptors            # test seeds: the report
+//!     ... -- --only office   # dev seeds of the families whose name holds `office`, to stdout
+//!     ... -- --render        # docs/descriptors.md again from docs/descriptors.json
+//!
+//! The dev run chooses each family's new preset and is kept in its own
+//! file, so that the test run (which reads it) stays near 15 minutes.
+//!
+//! Every preset of `placecat::descriptor::PRESETS` is run, so a preset
+//! added there joins by itself. For each family x sensor x preset x seed:
+//! deterministic (stride) k-means and hierarchical k-means++ (clustering
+//! seeds 0-9) at the true number of kinds, accuracy and ARI, and 1-NN
+//! leave-one-out with no neighbour from the scan's own room (routes: none
+//! within the stretch of 25 scans at the default 300 a route). The best
+//! new preset of a family is chosen on the development seeds (default
+//! sensor, stride k-means; of equals, the later in PRESETS) and reported on
+//! the test seeds, so the choice does not flatter it.
+//!
+//! The report is computed into plain data ([`Report`]), written as JSON,
+//! and the markdown is rendered from that data.
+
+use placecat::cluster::hkmeans::HkMeansParams;
+use placecat::cluster::*;
+use placecat::eval::evaluate;
+use placecat::sim::{Buildings, LidarParams, SceneKind, SimParams, Simulation};
+use placecat::*;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::fmt::Write;
+
+#[path = "common/real.rs"]
+mod real;
+
+/// The example's error: every failure is reported by `main`, none panics.
+type Res<T> = Result<T, Box<dyn std::error::Error>>;
+
+/// Seeds fixed in docs/seeds.md (issue 18) before any run.
+const DEV_SEEDS: [u64; 3] = [1, 2, 3];
+const TEST_SEEDS: [u64; 5] = [301, 302, 303, 304, 305];
+/// The presets of the paper and of placecat before issue 18.
+const PAPER_PRESETS: [&str; 4] = ["indoor", "outdoor", "perception_oru", "indoor_bands"];
+/// Route neighbours left out of a route scan's 1-NN, at the default
+/// density of 300 scans a route; scaled to the same stretch of route when
+/// a route has fewer scans.
+const ROUTE_WINDOW: usize = 25;
+/// Scans along a route here (a third of `placecat simulate`'s 300, to keep
+/// the run near 15 minutes on a shared machine).
+const ROUTE_SCANS: usize = 100;
+/// Indoor: scans per kind and per room.
+const KIND_SCANS: usize = 9;
+const ROOM_SCANS: usize = 3;
+/// Clustering seeds of hierarchical k-means++.
+const HK_SEEDS: u64 = 10;
+
+/// A scene family: how to simulate it from a seed, and the paper preset
+/// it is compared with.
+struct Family {
+    name: &'static str,
+    scene: SceneKind,
+    buildings: Buildings,
+    /// Indoor: scans per kind; routes: scans along the route.
+    scans: usize,
+    scans_per_room: usize,
+    paper: &'static str,
+    /// The other sensors it is run with, besides its own.
+    sensors: &'static [Sensor],
+}
+
+/// A sensor variant: a beam count or a height, else the scene's own.
+#[derive(Clone, Copy)]
+enum Sensor {
+    Own,
+    Beams(usize),
+    Height(f64),
+}
+
+impl Sensor {
+    fn name(self) -> String {
+        match self {
+            Sensor::Own => "own".into(),
+            Sensor::Beams(b) => format!("{b} beams"),
+            Sensor::Height(h) => format!("at {h} m"),
+        }
+    }
+}
+
+/// The whole sensor grid, for the family written last (the school).
+const ALL_SENSORS: &[Sensor] = &[
+    Sensor::Beams(16),
+    Sensor::Beams(32),
+    Sensor::Beams(64),
+    Sensor::Height(0.3),
+    Sensor::Height(1.8),
+];
+/// Subsamples of the grid for the other families, to keep the run's
+/// time: the sparsest sensor, the lowest mount.
+const SPARSE_SENSOR: &[Sensor] = &[Sensor::Beams(16)];
+const LOW_SENSOR: &[Sensor] = &[Sensor::Height(0.3)];
+/// The warehouse also with the 32-beam sensor of issue 18's table.
+const WAREHOUSE_SENSORS: &[Sensor] = &[Sensor::Beams(32)];
+
+/// The families. Scan counts are smaller than `placecat simulate`'s
+/// defaults (indoor 12 a kind in rooms of 3, routes 150 scans) to keep the
+/// whole run near 15 minutes on a shared two-core machine.
+fn families() -> Vec<Family> {
+    let indoor = |name, buildings| Family {
+        name,
+        scene: SceneKind::Indoor,
+        buildings,
+        scans: KIND_SCANS,
+        scans_per_room: ROOM_SCANS,
+        paper: "indoor",
+        sensors: SPARSE_SENSOR,
+    };
+    vec![
+        Family {
+            sensors: &[],
+            ..indoor("indoor (one building)", Buildings::One)
+        },
+        indoor("indoor (many buildings)", Buildings::Many),
+        Family {
+            sensors: &[],
+            ..indoor("indoor (varied plans)", Buildings::Varied)
+        },
+        Family {
+            scene: SceneKind::OfficeFloor,
+            sensors: LOW_SENSOR,
+            ..indoor("office floor", Buildings::One)
+        },
+        Family {
+            scene: SceneKind::School,
+            sensors: ALL_SENSORS,
+            ..indoor("school (fresh)", Buildings::One)
+        },
+        Family {
+            name: "warehouse",
+            scene: SceneKind::Warehouse,
+            buildings: Buildings::One,
+            scans: ROUTE_SCANS,
+            scans_per_room: 1,
+            paper: "indoor",
+            sensors: WAREHOUSE_SENSORS,
+        },
+        Family {
+            name: "outdoor",
+            scene: SceneKind::Outdoor,
+            buildings: Buildings::One,
+            scans: ROUTE_SCANS,
+            scans_per_room: 1,
+            paper: "outdoor",
+            sensors: SPARSE_SENSOR,
+        },
+    ]
+}
+
+fn sim_params(f: &Family, sensor: Sensor, seed: u64) -> Res<SimParams> {
+    let mut p = SimParams::new(f.scene, seed);
+    p.buildings = f.buildings;
+    p.scans = f.scans;
+    p.scans_per_room = f.scans_per_room;
+    match sensor {
+        Sensor::Own => {}
+        Sensor::Beams(b) => p.lidar = Some(LidarParams::with_beams(b)?),
+        Sensor::Height(h) => p.sensor_height = Some(h),
+    }
+    Ok(p)
+}
+
+/// One preset's figures on one simulated set.
+#[derive(Serialize, Deserialize, Clone, Copy, Default)]
+struct Figures {
+    stride_accuracy: f64,
+    stride_ari: f64,
+    /// Means over clustering seeds 0-9.
+    hk_accuracy: f64,
+    hk_ari: f64,
+    /// 1-NN with no neighbour from the scan's room (or route window).
+    nn_room: f64,
+    /// Plain leave-one-out 1-NN, for comparison with older reports.
+    nn_plain: f64,
+    /// Describing time per scan (ms, one core).
+    describe_ms: f64,
+}
+
+#[derive(Serialize, Deserialize)]
+struct SetResult {
+    family: String,
+    sensor: String,
+    seed: u64,
+    scans: usize,
+    /// (preset, figures), in the order of `placecat::descriptor::PRESETS`;
+    /// presets that could not describe every scan (the `outdoor` preset
+    /// finds nothing in its far ranges indoors) are in `failed`.
+    presets: Vec<(String, Figures)>,
+    /// (preset, the first error it gave).
+    failed: Vec<(String, String)>,
+}
+
+/// A scan's neighbours that 1-NN may not use.
+enum Exclusion {
+    /// Indoor: the room of each scan.
+    Rooms(Vec<usize>),
+    /// Routes: scans this close in the sequence.
+    Window(usize),
+}
+
+impl Exclusion {
+    fn allows(&self, i: usize, j: usize) -> bool {
+        match self {
+            Exclusion::Rooms(r) => r[i] != r[j],
+            Exclusion::Window(w) => i.abs_diff(j) > *w,
+        }
+    }
+}
+
+/// Share of scans whose nearest allowed neighbour has their label.
+fn nearest_neighbour(
+    m: &DistanceMatrix,
+    truth: &[String],
+    ok: impl Fn(usize, usize) -> bool,
+) -> f64 {
+    let hits = (0..m.n)
+        .filter(|&i| {
+            (0..m.n)
+                .filter(|&j| j != i && ok(i, j))
+                .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)))
+                .is_some_and(|j| truth[i] == truth[j])
+        })
+        .count();
+    hits as f64 / m.n as f64
+}
+
+fn measure(
+    descriptors: &[Descriptor],
+    params: &DescriptorParams,
+    truth: &[String],
+    ex: &Exclusion,
+    k: usize,
+) -> Res<Figures> {
+    let space = Space::new(descriptors, DistanceOptions::from(params))?;
+    let m = space.matrix();
+    let stride = evaluate(
+        truth,
+        &KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?.labels,
+    )?;
+    let (mut acc, mut ari) = (0.0, 0.0);
+    for seed in 0..HK_SEEDS {
+        let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(seed))?;
+        let e = evaluate(truth, &tree.cut_k(k)?.labels)?;
+        acc += e.accuracy / HK_SEEDS as f64;
+        ari += e.ari / HK_SEEDS as f64;
+    }
+    Ok(Figures {
+        stride_accuracy: stride.accuracy,
+        stride_ari: stride.ari,
+        hk_accuracy: acc,
+        hk_ari: ari,
+        nn_room: nearest_neighbour(&m, truth, |i, j| ex.allows(i, j)),
+        nn_plain: nearest_neighbour(&m, truth, |_, _| true),
+        describe_ms: 0.0,
+    })
+}
+
+/// Simulate one set and measure every preset on it.
+fn run_set(f: &Family, sensor: Sensor, seed: u64, presets: &[DescriptorParams]) -> Res<SetResult> {
+    let sim = Simulation::new(&sim_params(f, sensor, seed)?)?;
+    // Each scan has its own RNG stream, so casting in parallel changes no
+    // figure; every preset describes the scan while its points are here.
+    let per_scan: Vec<Vec<(placecat::Result<Descriptor>, f64)>> = (0..sim.len())
+        .into_par_iter()
+        .map(|i| {
+            let points = sim.scan(i).points;
+            presets
+                .iter()
+                .map(|p| {
+                    let t = std::time::Instant::now();
+                    let d = describe(&points, p);
+                    (d, t.elapsed().as_secs_f64() * 1e3)
+                })
+                .collect()
+        })
+        .collect();
+    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
+    let mut kinds = truth.clone();
+    kinds.sort();
+    kinds.dedup();
+    let ex = if f.scene == SceneKind::Warehouse || f.scene == SceneKind::Outdoor {
+        Exclusion::Window(
+            (ROUTE_WINDOW * sim.len()).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS),
+        )
+    } else {
+        Exclusion::Rooms((0..sim.len()).map(|i| sim.room(i)).collect())
+    };
+    let (mut out, mut failed) = (vec![], vec![]);
+    for (k, p) in presets.iter().enumerate() {
+        // Error is not Clone: keep the first message, clone the descriptors.
+        let ds: Result<Vec<Descriptor>, String> = per_scan
+            .iter()
+            .map(|s| s[k].0.as_ref().cloned().map_err(|e| e.to_string()))
+            .collect();
+        let ds = match ds {
+            Ok(ds) => ds,
+            Err(e) => {
+                failed.push((p.preset.to_string(), e));
+                continue;
+            }
+        };
+        let mut fig = measure(&ds, p, &truth, &ex, kinds.len())?;
+        fig.describe_ms = per_scan.iter().map(|s| s[k].1).sum::<f64>() / per_scan.len() as f64;
+        out.push((p.preset.to_string(), fig));
+    }
+    Ok(SetResult {
+        family: f.name.into(),
+        sensor: sensor.name(),
+        seed,
+        scans: sim.len(),
+        presets: out,
+        failed,
+    })
+}
+
+/// Real-scan retrieval: for each preset, the scans of tests/data/real
+/// whose nearest other scan is from another place.
+#[derive(Serialize, Deserialize)]
+struct RealRow {
+    preset: String,
+    scans: usize,
+    same_place: usize,
+    wrong: Vec<String>,
+}
+
+fn real_rows(presets: &[DescriptorParams]) -> Res<Vec<RealRow>> {
+    let scans = real::real_scans();
+    let mut rows = vec![];
+    for p in presets {
+        let ds: placecat::Result<Vec<Descriptor>> =
+            scans.par_iter().map(|s| describe(&s.2, p)).collect();
+        let ds = match ds {
+            Ok(ds) => ds,
+            Err(e) => {
+                rows.push(RealRow {
+                    preset: p.preset.to_string(),
+                    scans: scans.len(),
+                    same_place: 0,
+                    wrong: vec![format!("cannot describe every scan: {e}")],
+                });
+                continue;
+            }
+        };
+        let m = Space::new(&ds, DistanceOptions::from(p))?.matrix();
+        let wrong: Vec<String> = (0..m.n)
+            .filter(|&i| m.nearest_other(i).is_none_or(|j| scans[j].1 != scans[i].1))
+            .map(|i| scans[i].0.clone())
+            .collect();
+        rows.push(RealRow {
+            preset: p.preset.to_string(),
+            scans: m.n,
+            same_place: m.n - wrong.len(),
+            wrong,
+        });
+    }
+    Ok(rows)
+}
+
+#[derive(Serialize, Deserialize)]
+struct Report {
+    presets: Vec<String>,
+    new_presets: Vec<String>,
+    /// Per family: the paper preset and the new preset chosen on dev seeds.
+    choices: Vec<Choice>,
+    dev: Vec<SetResult>,
+    test: Vec<SetResult>,
+    real: Vec<RealRow>,
+    seconds: f64,
+}
+
+#[derive(Serialize, Deserialize)]
+struct Choice {
+    family: String,
+    paper: String,
+    /// None when there is no new preset yet.
+    best_new: Option<String>,
+}
+
+fn mean_of(sets: &[&SetResult], preset: &str, f: impl Fn(&Figures) -> f64) -> f64 {
+    // NaN (shown n/a) unless the preset described every set.
+    let v: Vec<f64> = sets
+        .iter()
+        .filter_map(|s| s.presets.iter().find(|p| p.0 == preset).map(|p| f(&p.1)))
+        .collect();
+    if v.is_empty() || v.len() < sets.len() {
+        return f64::NAN;
+    }
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+fn sets_of<'a>(all: &'a [SetResult], family: &str, sensor: &str) -> Vec<&'a SetResult> {
+    all.iter()
+        .filter(|s| s.family == family && s.sensor == sensor)
+        .collect()
+}
+
+/// The development run: the presets it ran and its sets.
+#[derive(Serialize, Deserialize)]
+struct DevRun {
+    presets: Vec<String>,
+    sets: Vec<SetResult>,
+    seconds: f64,
+}
+
+/// Every preset of PRESETS: names and parameters.
+fn all_presets() -> Res<(Vec<&'static str>, Vec<DescriptorParams>)> {
+    let names = placecat::descriptor::preset_names();
+    let presets = names
+        .iter()
+        .map(|n| DescriptorParams::preset(n))
+        .collect::<placecat::Result<_>>()?;
+    Ok((names, presets))
+}
+
+fn dev_run(only: Option<&str>) -> Res<DevRun> {
+    let t0 = std::time::Instant::now();
+    let (names, presets) = all_presets()?;
+    let mut sets = vec![];
+    for f in families()
+        .iter()
+        .filter(|f| only.is_none_or(|o| f.name.contains(o)))
+    {
+        for &seed in &DEV_SEEDS {
+            eprintln!(
+                "dev {} seed {seed} ({:.0} s)",
+                f.name,
+                t0.elapsed().as_secs_f64()
+            );
+            sets.push(run_set(f, Sensor::Own, seed, &presets)?);
+        }
+    }
+    Ok(DevRun {
+        presets: names.iter().map(|n| n.to_string()).collect(),
+        sets,
+        seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+fn compute(dev_run: DevRun, dev_only: bool) -> Res<Report> {
+    let t0 = std::time::Instant::now();
+    let (names, presets) = all_presets()?;
+    let new_presets: Vec<String> = names
+        .iter()
+        .filter(|n| !PAPER_PRESETS.contains(n))
+        .map(|n| n.to_string())
+        .collect();
+    if dev_run.presets != names {
+        return Err(format!(
+            "docs/descriptors-dev.json holds presets {:?}, there are {names:?}: run with --dev first",
+            dev_run.presets
+        )
+        .into());
+    }
+    let dev = dev_run.sets;
+    let fams: Vec<Family> = families()
+        .into_iter()
+        .filter(|f| dev.iter().any(|s| s.family == f.name))
+        .collect();
+    let choices = fams
+        .iter()
+        .map(|f| {
+            let sets = sets_of(&dev, f.name, "own");
+            // A preset that failed on a dev set (NaN) is never chosen.
+            let score = |p: &str| {
+                let v = mean_of(&sets, p, |x| x.stride_accuracy);
+                if v.is_nan() {
+                    f64::NEG_INFINITY
+                } else {
+                    v
+                }
+            };
+            let best_new = new_presets
+                .iter()
+                .filter(|p| score(p) > f64::NEG_INFINITY)
+                .max_by(|a, b| score(a).total_cmp(&score(b)))
+                .cloned();
+            Choice {
+                family: f.name.into(),
+                paper: f.paper.into(),
+                best_new,
+            }
+        })
+        .collect();
+    let mut test = vec![];
+    if !dev_only {
+        for f in &fams {
+            for sensor in std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()) {
+                for &seed in &TEST_SEEDS {
+                    eprintln!(
+                        "test {} {} seed {seed} ({:.0} s)",
+                        f.name,
+                        sensor.name(),
+                        t0.elapsed().as_secs_f64()
+                    );
+                    test.push(run_set(f, sensor, seed, &presets)?);
+                }
+            }
+        }
+    }
+    Ok(Report {
+        presets: names.iter().map(|n| n.to_string()).collect(),
+        new_presets,
+        choices,
+        dev,
+        test,
+        real: real_rows(&presets)?,
+        seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// A share in % with one decimal; `n/a` where the preset could not
+/// describe the scans.
+fn pct(x: f64) -> String {
+    if x.is_nan() {
+        "n/a".into()
+    } else {
+        format!("{:.1}", 100.0 * x)
+    }
+}
+
+/// The families' sensors in the order they were run.
+fn sensors_of(all: &[SetResult], family: &str) -> Vec<String> {
+    let mut out: Vec<String> = vec![];
+    for s in all.iter().filter(|s| s.family == family) {
+        if !out.contains(&s.sensor) {
+            out.push(s.sensor.clone());
+        }
+    }
+    out
+}
+
+/// The target of a family on stride k-means, as issue 18 sets it.
+fn target(family: &str, paper: f64) -> (String, f64) {
+    if family == "warehouse" {
+        ("at least 95 %".into(), 0.95)
+    } else if family == "outdoor" {
+        (
+            format!("not worse than the paper's {} %", pct(paper)),
+            paper,
+        )
+    } else {
+        ("at least 85 %".into(), 0.85)
+    }
+}
+
+fn render(r: &Report, notes: &str) -> Res<String> {
+    let mut o = String::new();
+    writeln!(o, "# Place descriptors beyond the paper (issue 18)\n")?;
+    writeln!(o, "Regenerate with `cargo run --release --example descriptors -- --dev` (the development seeds, `descriptors-dev.json`) then `cargo run --release --example descriptors` (the test seeds: this file and `descriptors.json`; {:.0} s for the test run on a two-core machine shared with five other builds; `-- --render` renders this file again from `descriptors.json`). Seeds fixed in [seeds.md](seeds.md) before any run: development 1, 2, 3; test 301 to 305. Every figure below is on the test seeds, each run once, whatever it showed, unless it says dev.\n", r.seconds)?;
+    writeln!(
+        o,
+        "Presets run: {}. The paper's (and placecat's before this issue): {}. New: {}.\n",
+        r.presets
+            .iter()
+            .map(|p| format!("`{p}`"))
+            .collect::<Vec<_>>()
+            .join(", "),
+        PAPER_PRESETS.map(|p| format!("`{p}`")).join(", "),
+        if r.new_presets.is_empty() {
+            "none yet".to_string()
+        } else {
+            r.new_presets
+                .iter()
+                .map(|p| format!("`{p}`"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
+    )?;
+    writeln!(o, "**Method.** Families: indoor rooms of one building, of many buildings (`--buildings many`), of varied plans (`--buildings varied`: mirrored layouts, L-shaped rooms), an office floor (`--scene office-floor`: corridor, private office, meeting room, open plan, restroom; doors open into the corridor; written while the descriptors were being built, by another hand), school floors written after the descriptors were committed (`--scene school`: corridor with lockers, classroom, library, cafeteria, staff room), the warehouse and the outdoor site. No descriptor or preset was developed on the office or school floors. Indoor families: {KIND_SCANS} scans a kind, {ROOM_SCANS} per room at free spots anywhere in it ({} scans a set); routes: {ROUTE_SCANS} scans (a third of `placecat simulate`'s default). Sensors: each scene's own (128-beam OS0 indoors and in the warehouse at 1.0 to 1.4 m, 64-beam KITTI-like outdoors at 1.6 to 1.95 m); the school (the family written last) also with `--beams 16/32/64` and `--sensor-height 0.3/1.8`; rooms of many buildings and outdoors also with 16 beams; the office floor at 0.3 m; the warehouse with 32 beams; rooms of one building and of varied plans only with their own sensor. **Subsampled** (fewer scans, not every family with every sensor) so that the whole run stays near 15 minutes on a two-core machine shared by six builds; the sets are small, so a figure moves by 1/45 (indoor) or 1/100 (routes) per scan. Measures at the true number of kinds: deterministic (stride) k-means, hierarchical k-means++ (mean of clustering seeds 0-9), accuracy and ARI; 1-NN leave-one-out with no neighbour from the scan's room (routes: none within {ROUTE_WINDOW} scans at the default density of 300 a route, i.e. within {} of the {ROUTE_SCANS} scans here). The new preset reported for a family is the one with the best stride k-means on the dev seeds with the scene's own sensor (table in section 5).\n", 5 * KIND_SCANS, (ROUTE_WINDOW * ROUTE_SCANS).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS))?;
+    writeln!(o, "## 1. The best new preset against the paper's, per family (own sensor, mean of test seeds 301-305)\n")?;
+    writeln!(o, "| family | preset | stride k-means | ARI | hk-means++ | ARI | room-level 1-NN | target (stride k-means) | met |\n|---|---|---|---|---|---|---|---|---|")?;
+    for c in &r.choices {
+        let sets = sets_of(&r.test, &c.family, "own");
+        let paper = mean_of(&sets, &c.paper, |x| x.stride_accuracy);
+        let (text, bar) = target(&c.family, paper);
+        let mut rows = vec![(format!("`{}` (paper)", c.paper), c.paper.clone())];
+        if let Some(b) = &c.best_new {
+            rows.push((format!("`{b}` (new)"), b.clone()));
+        }
+        for (label, p) in rows {
+            let acc = mean_of(&sets, &p, |x| x.stride_accuracy);
+            let met = if p == c.paper {
+                "-".to_string()
+            } else if acc + 1e-9 >= bar {
+                "yes".into()
+            } else {
+                "**no**".into()
+            };
+            writeln!(
+                o,
+                "| {} | {label} | {} | {:.3} | {} | {:.3} | {} | {text} | {met} |",
+                c.family,
+                pct(acc),
+                mean_of(&sets, &p, |x| x.stride_ari),
+                pct(mean_of(&sets, &p, |x| x.hk_accuracy)),
+                mean_of(&sets, &p, |x| x.hk_ari),
+                pct(mean_of(&sets, &p, |x| x.nn_room))
+            )?;
+        }
+    }
+    writeln!(o, "\n## 2. Every preset, every family and sensor (mean of test seeds 301-305)\n\nEach cell: stride k-means / hk-means++ / room-level 1-NN, in %.\n")?;
+    for c in &r.choices {
+        writeln!(o, "### {}\n", c.family)?;
+        let sensors = sensors_of(&r.test, &c.family);
+        writeln!(
+            o,
+            "| preset | {} |\n|---|{}",
+            sensors.join(" | "),
+            "---|".repeat(sensors.len())
+        )?;
+        for p in &r.presets {
+            let cells: Vec<String> = sensors
+                .iter()
+                .map(|s| {
+                    let sets = sets_of(&r.test, &c.family, s);
+                    format!(
+                        "{} / {} / {}",
+                        pct(mean_of(&sets, p, |x| x.stride_accuracy)),
+                        pct(mean_of(&sets, p, |x| x.hk_accuracy)),
+                        pct(mean_of(&sets, p, |x| x.nn_room))
+                    )
+                })
+                .collect();
+            let mark = if *p == c.paper {
+                " (paper)"
+            } else if Some(p) == c.best_new.as_ref() {
+                " (new, chosen)"
+            } else {
+                ""
+            };
+            writeln!(o, "| `{p}`{mark} | {} |", cells.join(" | "))?;
+        }
+        writeln!(o)?;
+    }
+    render_failures(&mut o, r)?;
+    writeln!(o, "## 3. Real scans: same-place retrieval (tests/data/real, 18 scans at 5 places)\n\nA scan counts when its nearest other scan under the preset's distance is from the same place (`groups.csv`); no preset was tuned on these files.\n\n| preset | same place | nearest from another place |\n|---|---|---|")?;
+    for row in &r.real {
+        writeln!(
+            o,
+            "| `{}` | {} of {} | {} |",
+            row.preset,
+            row.same_place,
+            row.scans,
+            if row.wrong.is_empty() {
+                "none".to_string()
+            } else {
+                row.wrong.join(", ")
+            }
+        )?;
+    }
+    writeln!(o, "\n## 4. What did not work\n")?;
+    writeln!(o, "{notes}")?;
+    writeln!(o, "Sets where the chosen new preset does worse than the paper's (test-seed means, stride k-means or room-level 1-NN, by more than 1 point):\n")?;
+    let mut any = false;
+    for c in &r.choices {
+        let Some(b) = &c.best_new else { continue };
+        for s in sensors_of(&r.test, &c.family) {
+            let sets = sets_of(&r.test, &c.family, &s);
+            for (what, f) in [
+                (
+                    "stride k-means",
+                    (|x: &Figures| x.stride_accuracy) as fn(&Figures) -> f64,
+                ),
+                ("room-level 1-NN", |x: &Figures| x.nn_room),
+            ] {
+                let (new, old) = (mean_of(&sets, b, f), mean_of(&sets, &c.paper, f));
+                if new < old - 0.01 {
+                    any = true;
+                    writeln!(
+                        o,
+                        "- {}, sensor {s}: {what} `{b}` {} % vs `{}` {} %",
+                        c.family,
+                        pct(new),
+                        c.paper,
+                        pct(old)
+                    )?;
+                }
+            }
+        }
+    }
+    if !any {
+        writeln!(o, "- none")?;
+    }
+    writeln!(o, "\n## 5. Development seeds (1-3, own sensor): the choice of the new preset\n\n| family | preset | stride k-means | hk-means++ | room-level 1-NN | describe ms a scan (wall time in a worker on the busy machine: a rough guide, not a benchmark) |\n|---|---|---|---|---|---|")?;
+    for c in &r.choices {
+        let sets = sets_of(&r.dev, &c.family, "own");
+        for p in &r.presets {
+            let mark = if Some(p) == c.best_new.as_ref() {
+                " (chosen)"
+            } else {
+                ""
+            };
+            writeln!(
+                o,
+                "| {} | `{p}`{mark} | {} | {} | {} | {} |",
+                c.family,
+                pct(mean_of(&sets, p, |x| x.stride_accuracy)),
+                pct(mean_of(&sets, p, |x| x.hk_accuracy)),
+                pct(mean_of(&sets, p, |x| x.nn_room)),
+                pct(mean_of(&sets, p, |x| x.describe_ms / 100.0))
+            )?;
+        }
+    }
+    writeln!(o, "\n## 6. Every test-seed figure\n\nEach cell: stride k-means / hk-means++ / room-level 1-NN, in %; ARI and plain 1-NN are in `descriptors.json`.\n\n| family | sensor | preset | {} |\n|---|---|---|{}", TEST_SEEDS.map(|s| s.to_string()).join(" | "), "---|".repeat(TEST_SEEDS.len()))?;
+    for c in &r.choices {
+        for s in sensors_of(&r.test, &c.family) {
+            let sets = sets_of(&r.test, &c.family, &s);
+            for p in &r.presets {
+                let cells: Vec<String> = sets
+                    .iter()
+                    .map(|set| {
+                        set.presets
+                            .iter()
+                            .find(|x| x.0 == *p)
+                            .map_or("-".into(), |(_, x)| {
+                                format!(
+                                    "{} / {} / {}",
+                                    pct(x.stride_accuracy),
+                                    pct(x.hk_accuracy),
+                                    pct(x.nn_room)
+                                )
+                            })
+                    })
+                    .collect();
+                writeln!(o, "| {} | {s} | `{p}` | {} |", c.family, cells.join(" | "))?;
+            }
+        }
+    }
+    Ok(o)
+}
+
+/// The presets that could not describe every scan of a set (n/a above):
+/// on how many test sets of which family, and the first error.
+fn render_failures(o: &mut String, r: &Report) -> std::fmt::Result {
+    let mut seen: Vec<(String, String, usize, String)> = vec![];
+    for set in &r.test {
+        for (preset, error) in &set.failed {
+            match seen
+                .iter_mut()
+                .find(|x| x.0 == set.family && x.1 == *preset)
+            {
+                Some(x) => x.2 += 1,
+                None => seen.push((set.family.clone(), preset.clone(), 1, error.clone())),
+            }
+        }
+    }
+    if seen.is_empty() {
+        return Ok(());
+    }
+    writeln!(o, "Presets shown n/a could not describe every scan of a set (the error stops a run on such a set, so no figure):\n")?;
+    for (family, preset, n, error) in seen {
+        writeln!(
+            o,
+            "- {family}, `{preset}`: {n} test sets; first error: {error}"
+        )?;
+    }
+    writeln!(o)
+}
+
+/// What did not work, in words, written after the test run (the figures
+/// behind it are in the tables; the list after it is computed).
+const NOTES: &str = "Written after the one test run (presets of the `desc` branch at commit 2eca927, merged here; the figures are in the tables above).
+
+- **The indoor target is not met on the floors written for this evaluation.** Office floor: the chosen `indoor_plus` gives stride k-means 74.2 % (the paper's `indoor` 68.0 %), at 0.3 m 66.7 % (55.1 %). School, the family written after the descriptors were committed: 74.2 % (63.6 %); over its six sensors `indoor_plus` gives 74 to 83 %, the paper's 64 to 74 %. Better than the paper's everywhere there, and still 2 to 11 points short of 85 %. On the three room families the new presets were built on (one building, many buildings, varied plans) they reach 91 to 97 %, and the paper's 85 to 93 % on these smaller sets: the gap between those families and the floors is the honest measure of how far the new parts generalise.
+- **Warehouse halls: stride k-means stays at 65 to 72 % for every preset but `indoor_bands` (78.4 %)** (chosen new 71.0 %, paper 68.0 %; 32 beams 71.4 % against 60.0 %), far from 95 %. Hierarchical k-means++ with the new presets reaches 91 to 98 % on the same Delta (`indoor_plus` 96.5 %, 32 beams 97.5 %; paper 63.7 %; only `free_space` at 32 beams falls to 71.4 %): the new parts do separate the halls, but deterministic k-means' stride seeding does not find that split. The target, stated for stride k-means, is missed.
+- **Room-level 1-NN got worse in two places**: warehouse 95.8 % against 98.6 % (`indoor_plus` vs `indoor`), rooms of many buildings 90.7 % against 92.0 %. On the office floor it stays where the paper's is (66.2 % against 65.8 %), on the school 77.8 % against 76.4 %.
+- **The choice on the development seeds cost some points once**: for rooms of one building the dev seeds chose `free_space` (94.2 % on test), while `indoor_plus` gave 97.3 % on the test seeds. The chosen one is what section 1 reports.
+- **`free_space` alone** (the free-space slice without the NDT histogram's full weight) is never the best on the floors: 63.1 % on the school, as the paper's preset, 69.8 % on the office floor.
+- **`outdoor` and `outdoor_plus` cannot describe most indoor scans** (no voxel in their far range intervals): n/a on every set of the three room families and on 9 of the 10 office-floor sets; on the school's larger rooms they describe 27 of 30 sets and rank below `indoor_plus` there.
+- **Small sets**: 45 scans a set indoors (one scan moves a figure by 2.2 points), 100 along a route; means over five test seeds. Differences of two or three points between presets are within that noise.
+";
+
+fn main() -> Res<()> {
+    let args: Vec<String> = std::env::args().collect();
+    let dev_only = args.iter().any(|a| a == "--dev");
+    let only = args
+        .iter()
+        .position(|a| a == "--only")
+        .and_then(|i| args.get(i + 1));
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let dev_path = docs.join("descriptors-dev.json");
+    if dev_only || only.is_some() {
+        let dev = dev_run(only.map(String::as_str))?;
+        if only.is_none() {
+            std::fs::write(&dev_path, serde_json::to_string_pretty(&dev)?)?;
+            eprintln!("wrote docs/descriptors-dev.json ({:.0} s)", dev.seconds);
+        }
+        println!("{}", render(&compute(dev, true)?, NOTES)?);
+        return Ok(());
+    }
+    if args.iter().any(|a| a == "--render") {
+        let path = docs.join("descriptors.json");
+        let text =
+            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let report: Report = serde_json::from_str(&text)?;
+        std::fs::write(docs.join("descriptors.md"), render(&report, NOTES)?)?;
+        eprintln!("rendered docs/descriptors.md from docs/descriptors.json");
+        return Ok(());
+    }
+    let text = std::fs::read_to_string(&dev_path)
+        .map_err(|e| format!("{}: {e} (run with --dev first)", dev_path.display()))?;
+    let report = compute(serde_json::from_str(&text)?, false)?;
+    let md = render(&report, NOTES)?;
+    std::fs::write(
+        docs.join("descriptors.json"),
+        serde_json::to_string_pretty(&report)?,
+    )?;
+    std::fs::write(docs.join("descriptors.md"), md)?;
+    eprintln!(
+        "wrote docs/descriptors.md and docs/descriptors.json ({:.0} s)",
+        report.seconds
+    );
+    Ok(())
+}
