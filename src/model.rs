@@ -169,6 +169,11 @@ impl LabelledModel {
                 descriptors.len()
             )));
         }
+        // A model must load again: its descriptors' shape and parts must be
+        // those its parameters make (from_json checks the same).
+        for d in descriptors {
+            d.validate_for(params)?;
+        }
         let space = Space::new(descriptors, DistanceOptions::from(params))?;
         let mut ids: Vec<i32> = labels.iter().copied().filter(|&l| l >= 0).collect();
         ids.sort_unstable();

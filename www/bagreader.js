@@ -102,7 +102,15 @@ export function describeBag(wasm, t, post) {
           for (let skip = failed + tries - 1; skip > 0; skip--) {
             try { clouds.next()?.free(); } catch { /* posted on the first pass */ }
           }
-          scan = nextOf(clouds);
+          // This cloud read again under the new preset: one that fails now is
+          // posted and skipped like any bad cloud, not the end of the bag.
+          try {
+            scan = nextOf(clouds);
+          } catch (e) {
+            failed++;
+            post({ error: String(/** @type {any} */ (e)?.message ?? e), ...progress() }, []);
+            continue;
+          }
           if (!scan) break;
         }
       }

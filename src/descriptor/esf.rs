@@ -46,11 +46,22 @@ fn norm(a: &[f32; 3]) -> f32 {
     (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
 }
 
-/// Share of the voxels along a to b (sampled every voxel edge) that are
-/// occupied.
+/// Most samples along one line: 4,096 voxel edges are 1 km, beyond any
+/// lidar's reach, so real scans are sampled every voxel edge; a wild point
+/// (the readers accept any finite value, e.g. 1e30) must not make one
+/// line cost billions of lookups or, at infinity, never end.
+const MAX_STEPS: usize = 4096;
+
+/// Share of the voxels along a to b (sampled every voxel edge, at most
+/// [`MAX_STEPS`]) that are occupied.
 fn occupied_share(a: &[f32; 3], b: &[f32; 3], occupied: &FxHashSet<Key>) -> f64 {
     let d = sub(b, a);
-    let steps = ((norm(&d) / VOXEL).ceil() as usize).max(1);
+    let length = norm(&d) / VOXEL;
+    let steps = if length.is_finite() {
+        (length.ceil() as usize).clamp(1, MAX_STEPS)
+    } else {
+        MAX_STEPS
+    };
     let hits = (0..=steps)
         .filter(|&s| {
             let t = s as f32 / steps as f32;

@@ -150,7 +150,7 @@ pub const PRESET_NOTES: [(&str, &str); 8] = [
     ),
     (
         "free_space",
-        "the free-space slice and ring heights alone, no NDT histogram: size and shape of the space only",
+        "the free-space slice and ring heights alone (the NDT histogram is computed but weighs 0): size and shape of the space only",
     ),
 ];
 

@@ -138,11 +138,9 @@ impl PartValues {
 /// distance between two such masses is then exactly |x - y| in bins.
 pub fn soft_bin(hist: &mut [f32], x: f64, mass: f32) {
     let top = (hist.len() - 1) as f64;
-    let x = if x.is_finite() {
-        x.clamp(0.0, top)
-    } else {
-        0.0
-    };
+    // An infinite position (a distance overflowing from a wild but finite
+    // point) belongs in the top bin, as any value beyond the range does.
+    let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, top) };
     let lo = x.floor() as usize;
     let frac = (x - lo as f64) as f32;
     hist[lo] += mass * (1.0 - frac);

@@ -30,3 +30,4 @@ mod scene_families;
 mod simulator;
 mod survey;
 mod untrusted_json;
+mod wild_points;
