@@ -31,18 +31,24 @@ if [ ! -x "$venv/bin/python" ] || [ "$(cat "$venv/.placecat-reqs" 2>/dev/null)" 
 fi
 
 # The Python crate is a workspace member outside default-members, so the
-# root's fmt and clippy steps do not see it: lint it here.
+# root's fmt and clippy steps do not see it: lint it here, in a target
+# folder of its own (maturin sets PyO3's build environment differently, and
+# sharing one folder would rebuild pyo3 and the wheel after every clippy).
 cargo fmt -p placecat-python --check
-cargo clippy -p placecat-python --release --quiet -- -D warnings
+CARGO_TARGET_DIR=$target/python-clippy cargo clippy -p placecat-python --quiet -- -D warnings
 
 # The CLI every Python result is compared with (already built by
 # `cargo test --release` in npm test; then this is a no-op).
 cargo build --release --quiet --bin placecat
 
-# The wheel, by the README's command (Python section).
+# The wheel, by the README's command (Python section), in a target folder of
+# its own: the core built without its default features writes the same
+# unhashed deps/libplacecat.so (its cdylib) as the CLI's build, and sharing
+# a folder would rebuild both every run.
 wheels=$target/wheels
 rm -f "$wheels"/placecat-*.whl
-"$venv/bin/maturin" build --release -m python/Cargo.toml -o "$wheels" --quiet
+CARGO_TARGET_DIR=$target/python-wheel \
+  "$venv/bin/maturin" build --release -m python/Cargo.toml -o "$wheels" --quiet
 wheel=$(ls "$wheels"/placecat-*.whl)
 "$venv/bin/pip" install --quiet --force-reinstall --no-deps "$wheel"
 
