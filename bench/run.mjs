@@ -6,7 +6,7 @@ import { chromium } from 'playwright-core';
 import { createRequire } from 'node:module';
 import { execFileSync, execSync } from 'node:child_process';
 import { existsSync, mkdirSync, readdirSync, writeFileSync } from 'node:fs';
-import { join, resolve } from 'node:path';
+import { basename, join, resolve } from 'node:path';
 import { serve } from '../scripts/serve.mjs';
 import { makePly, compare } from './parsers.mjs';
 
@@ -43,7 +43,9 @@ const browser = await chromium.launch({
   args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--enable-precise-memory-info'],
 });
 const page = await browser.newPage();
-await page.goto(`${base}/main/bench/page.html`);
+// The checkout's own folder name (main, or a worktree's).
+const checkout = basename(ROOT);
+await page.goto(`${base}/${checkout}/bench/page.html`);
 await page.waitForFunction(() => document.getElementById('status').textContent === 'ready');
 results.chromium = {
   binary: await page.evaluate((n) => window.benchParse(n, true), N),
@@ -65,7 +67,7 @@ await page.close();
 
 // 3. The page's worker pool on POOL_SCANS files, with memory sampled.
 const app = await browser.newPage({ viewport: { width: 1400, height: 1000 } });
-await app.goto(`${base}/main/www/index.html`);
+await app.goto(`${base}/${checkout}/www/index.html`);
 await app.waitForFunction(() => document.body.dataset.ready === 'true');
 const files = readdirSync(join(ART, 'bench-1000')).filter((f) => f.endsWith('.ply')).sort().slice(0, POOL_SCANS).map((f) => join(ART, 'bench-1000', f));
 let peakHeap = 0, peakRss = 0;

@@ -16,15 +16,23 @@ use std::time::Duration;
 
 const REAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
 
-/// A simulated outdoor scan of about `rays` rays.
+/// A simulated outdoor scan of about `beams` x `azimuth` rays.
 fn sim_scan(beams: usize, azimuth: usize) -> Vec<[f32; 3]> {
-    let mut p = SimParams::new(SceneKind::Outdoor, 1);
+    sim_scan_of(SceneKind::Outdoor, beams, azimuth)
+}
+
+fn sim_scan_of(scene: SceneKind, beams: usize, azimuth: usize) -> Vec<[f32; 3]> {
+    let mut p = SimParams::new(scene, 1);
     p.scans = 3;
+    let base = match scene {
+        SceneKind::Indoor => LidarParams::indoor(),
+        _ => LidarParams::outdoor(),
+    };
     p.lidar = Some(LidarParams {
         beams,
         azimuth_steps: azimuth,
         dropout: 0.0,
-        ..LidarParams::outdoor()
+        ..base
     });
     Simulation::new(&p).unwrap().scan(1).points
 }
@@ -111,7 +119,6 @@ fn read(c: &mut Criterion) {
 }
 
 fn describe_stages(c: &mut Criterion) {
-    let p = DescriptorParams::outdoor();
     let mut g = c.benchmark_group("describe");
     let kitti = read_scan(
         &std::fs::read(format!("{REAL}/kitti00/000094.bin")).unwrap(),
@@ -120,47 +127,55 @@ fn describe_stages(c: &mut Criterion) {
     )
     .unwrap()
     .points;
-    for (label, pts) in [
-        ("real_kitti_121k", kitti),
-        ("sim_100k", sim_scan(64, 1800)),
-        ("sim_1M", sim_scan(128, 8192)),
+    // Sparse outdoor (~100k), dense outdoor and indoor (~1M), an 8-beam
+    // sensor (~6k), and a real KITTI scan.
+    for (label, pts, p) in [
+        ("real_kitti_121k", kitti, DescriptorParams::outdoor()),
+        ("sim_100k", sim_scan(64, 1800), DescriptorParams::outdoor()),
+        ("sim_1M", sim_scan(128, 8192), DescriptorParams::outdoor()),
+        (
+            "sim_indoor_1M",
+            sim_scan_of(SceneKind::Indoor, 128, 8192),
+            DescriptorParams::indoor(),
+        ),
+        (
+            "sim_8beam_6k",
+            sim_scan(8, 900),
+            DescriptorParams::outdoor(),
+        ),
     ] {
         g.throughput(Throughput::Elements(pts.len() as u64));
-        g.bench_with_input(
-            BenchmarkId::new("ndt_grid+classify", label),
-            &pts,
-            |b, x| {
-                b.iter(|| {
-                    let grid = ndt_grid::build(x, p.voxel_size, p.min_points_per_voxel);
-                    grid.cells
-                        .iter()
-                        .filter_map(|c| shape::classify(c, p.eigen_threshold))
-                        .count()
-                })
-            },
-        );
+        g.bench_with_input(BenchmarkId::new("ndt_grid", label), &pts, |b, x| {
+            b.iter(|| {
+                ndt_grid::build(x, p.voxel_size, p.min_points_per_voxel)
+                    .cells
+                    .len()
+            })
+        });
         let grid = ndt_grid::build(&pts, p.voxel_size, p.min_points_per_voxel);
+        g.bench_with_input(BenchmarkId::new("classify", label), &grid, |b, x| {
+            b.iter(|| {
+                x.cells
+                    .iter()
+                    .filter_map(|c| shape::classify(c, p.eigen_threshold))
+                    .count()
+            })
+        });
         let cells: Vec<_> = grid
             .cells
             .iter()
             .filter_map(|c| shape::classify(c, p.eigen_threshold))
             .collect();
-        g.bench_with_input(
-            BenchmarkId::new("alignment+histogram", label),
-            &cells,
-            |b, x| {
-                b.iter(|| {
-                    histogram::histograms(x, &alignment::candidates(x, &p), &p)
-                        .0
-                        .len()
-                })
-            },
-        );
-        g.bench_with_input(
-            BenchmarkId::new("read+describe_total", label),
-            &pts,
-            |b, x| b.iter(|| describe(x, &p).unwrap().total()),
-        );
+        g.bench_with_input(BenchmarkId::new("alignment", label), &cells, |b, x| {
+            b.iter(|| alignment::candidates(x, &p).len())
+        });
+        let rotations = alignment::candidates(&cells, &p);
+        g.bench_with_input(BenchmarkId::new("histogram", label), &cells, |b, x| {
+            b.iter(|| histogram::histograms(x, &rotations, &p).0.len())
+        });
+        g.bench_with_input(BenchmarkId::new("describe_total", label), &pts, |b, x| {
+            b.iter(|| describe(x, &p).unwrap().total())
+        });
     }
     g.finish();
 }

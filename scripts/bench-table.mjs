@@ -6,8 +6,13 @@ import { join } from 'node:path';
 
 const root = new URL('..', import.meta.url).pathname;
 const crit = join(root, 'target/criterion');
+// BENCH_BASELINE: the criterion folder of a previous build's run on the
+// same inputs (e.g. main built in another target dir and run alternately
+// with this one): its medians become the "previous" column and the ratio.
+const baselineDir = process.env.BENCH_BASELINE;
 const rows = [];
-(function walk(dir) {
+const previous = new Map();
+function walk(dir, into) {
   for (const e of readdirSync(dir, { withFileTypes: true })) {
     const p = join(dir, e.name);
     if (e.isDirectory() && e.name === 'new' && existsSync(join(p, 'estimates.json'))) {
@@ -15,10 +20,12 @@ const rows = [];
       const meta = JSON.parse(readFileSync(join(p, 'benchmark.json'), 'utf8'));
       const ns = est.median.point_estimate;
       const elements = meta.throughput?.Elements ?? null;
-      rows.push({ id: meta.full_id, group: meta.group_id, func: meta.function_id, param: meta.value_str, seconds: ns / 1e9, elements, perSecond: elements ? elements / (ns / 1e9) : null });
-    } else if (e.isDirectory() && e.name !== 'report') walk(p);
+      into({ id: meta.full_id, group: meta.group_id, func: meta.function_id, param: meta.value_str, seconds: ns / 1e9, elements, perSecond: elements ? elements / (ns / 1e9) : null });
+    } else if (e.isDirectory() && e.name !== 'report') walk(p, into);
   }
-})(crit);
+}
+walk(crit, (r) => rows.push(r));
+if (baselineDir) walk(baselineDir, (r) => previous.set(r.id, r));
 rows.sort((a, b) => a.id.localeCompare(b.id));
 const find = (func, param) => rows.find((r) => r.func === func && r.param === param);
 const m = (x) => (x / 1e6).toFixed(1);
@@ -41,11 +48,20 @@ if (ndtRows.length) {
   const plus = rows.find((r) => r.group === 'parts_distance' && r.func === 'delta_matrix_indoor_plus');
   if (paper && plus) lines.push('', `Delta matrix of ${paper.param} scans (all cores): paper ${(paper.seconds * 1e3).toFixed(1)} ms, indoor_plus ${(plus.seconds * 1e3).toFixed(1)} ms (${(plus.seconds / paper.seconds).toFixed(2)}x).`);
 }
-lines.push('', '## Every stage', '', '| benchmark | median time | throughput |', '|---|---|---|');
+const time = (s) => (s < 1e-3 ? (s * 1e6).toFixed(1) + ' µs' : s < 1 ? (s * 1e3).toFixed(2) + ' ms' : s.toFixed(2) + ' s');
+const withBaseline = previous.size > 0;
+lines.push('', '## Every stage', '');
+if (withBaseline) lines.push(`"previous": the same benchmark of the build in \`${baselineDir}\`, run on this machine in the same session; speed-up = previous time / this time.`, '');
+lines.push(withBaseline ? '| benchmark | median time | throughput | previous | speed-up |' : '| benchmark | median time | throughput |', withBaseline ? '|---|---|---|---|---|' : '|---|---|---|');
 for (const r of rows) {
   const unit = r.group === 'cluster' && r.func === 'delta_matrix' ? 'pairs/s' : r.group === 'cluster' ? 'scans/s' : 'points/s';
-  lines.push(`| ${r.id} | ${r.seconds < 1e-3 ? (r.seconds * 1e6).toFixed(1) + ' µs' : r.seconds < 1 ? (r.seconds * 1e3).toFixed(2) + ' ms' : r.seconds.toFixed(2) + ' s'} | ${r.perSecond ? m(r.perSecond) + ` M${unit}` : '-'} |`);
+  const cells = [r.id, time(r.seconds), r.perSecond ? m(r.perSecond) + ` M${unit}` : '-'];
+  if (withBaseline) {
+    const p = previous.get(r.id);
+    cells.push(p ? time(p.seconds) : '-', p ? (p.seconds / r.seconds).toFixed(2) + 'x' : '-');
+  }
+  lines.push(`| ${cells.join(' | ')} |`);
 }
 writeFileSync(join(root, 'docs/benchmarks.md'), lines.join('\n') + '\n');
-writeFileSync(join(root, 'docs/benchmarks.json'), JSON.stringify(rows, null, 2) + '\n');
+writeFileSync(join(root, 'docs/benchmarks.json'), JSON.stringify(withBaseline ? rows.map((r) => ({ ...r, previousSeconds: previous.get(r.id)?.seconds ?? null })) : rows, null, 2) + '\n');
 console.log(lines.join('\n'));

@@ -7,10 +7,13 @@ use super::directions;
 use super::params::DescriptorParams;
 use super::shape::{Shape, ShapedCell};
 
-/// What does not depend on the orientation: the columns and band of a voxel.
-struct Placement {
-    cols: Vec<u16>,
-    band: usize,
+/// What does not depend on the orientation, for the voxels in at least one
+/// range interval: the voxel, its row offset (band x classes) and its
+/// columns, as a slice of one shared list (no allocation per voxel).
+struct Placed<'a> {
+    cell: &'a ShapedCell,
+    band_row: usize,
+    cols: std::ops::Range<usize>,
 }
 
 /// Build one count matrix (row-major, rows x cols) per rotation; also
@@ -28,36 +31,38 @@ pub fn histograms(
     let planar_dirs = directions::hemisphere(np);
     let linear_dirs = directions::hemisphere(nl);
 
-    let placements: Vec<Placement> = cells
-        .iter()
-        .map(|c| {
-            let r = (c.mean[0] * c.mean[0] + c.mean[1] * c.mean[1] + c.mean[2] * c.mean[2]).sqrt();
-            // Intervals overlap: a voxel counts in every one that holds it.
-            let cols = params
-                .ranges
-                .iter()
-                .enumerate()
-                .filter(|(_, (lo, hi))| r >= *lo && hi.is_none_or(|h| r < h))
-                .map(|(i, _)| i as u16)
-                .collect();
-            // Height bands use the sensor frame's z (the sensor is assumed
-            // upright, as the bands are meant for ground robots).
-            let band = params
-                .height_bands
-                .partition_point(|&edge| edge <= c.mean[2]);
-            Placement { cols, band }
-        })
-        .collect();
+    let mut col_list: Vec<u16> = Vec::with_capacity(cells.len() * 2);
+    let mut placed: Vec<Placed> = Vec::with_capacity(cells.len());
+    for c in cells {
+        let r = (c.mean[0] * c.mean[0] + c.mean[1] * c.mean[1] + c.mean[2] * c.mean[2]).sqrt();
+        // Intervals overlap: a voxel counts in every one that holds it.
+        let first = col_list.len();
+        for (i, (lo, hi)) in params.ranges.iter().enumerate() {
+            if r >= *lo && hi.is_none_or(|h| r < h) {
+                col_list.push(i as u16);
+            }
+        }
+        if col_list.len() == first {
+            continue;
+        }
+        // Height bands use the sensor frame's z (the sensor is assumed
+        // upright, as the bands are meant for ground robots).
+        let band = params
+            .height_bands
+            .partition_point(|&edge| edge <= c.mean[2]);
+        placed.push(Placed {
+            cell: c,
+            band_row: band * classes,
+            cols: first..col_list.len(),
+        });
+    }
 
-    let in_range = placements.iter().filter(|p| !p.cols.is_empty()).count();
     let matrices = rotations
         .iter()
         .map(|rot| {
             let mut f = vec![0u32; params.rows() * cols];
-            for (c, p) in cells.iter().zip(&placements) {
-                if p.cols.is_empty() {
-                    continue;
-                }
+            for p in &placed {
+                let c = p.cell;
                 let class = match c.shape {
                     Shape::Spherical => {
                         let roughness = c.eigenvalues[0] / c.eigenvalues[2];
@@ -70,13 +75,13 @@ pub fn histograms(
                         ns + np + directions::nearest(&linear_dirs, &rotate(rot, &c.axis))
                     }
                 };
-                let row = p.band * classes + class;
-                for &col in &p.cols {
+                let row = p.band_row + class;
+                for &col in &col_list[p.cols.clone()] {
                     f[row * cols + col as usize] += 1;
                 }
             }
             f
         })
         .collect();
-    (matrices, in_range)
+    (matrices, placed.len())
 }

@@ -32,21 +32,20 @@ pub struct ShapedCell {
     pub axis: [f64; 3],
 }
 
+mod eigen;
+
 /// Eigen-decompose and classify. None when the covariance is degenerate
 /// (all points equal: no shape to speak of).
 pub fn classify(cell: &Cell, eigen_threshold: f64) -> Option<ShapedCell> {
-    let m = Matrix3::from_fn(|i, j| cell.cov[i][j]);
-    let eig = SymmetricEigen::new(m);
-    let mut order = [0usize, 1, 2];
-    order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
-    let l3 = eig.eigenvalues[order[2]];
+    let eig = eigen::closed_form(&cell.cov).unwrap_or_else(|| general(&cell.cov));
+    let l3 = eig.values[2];
     if l3.is_nan() || l3 <= 0.0 || !l3.is_finite() {
         return None;
     }
     // Regularise as the NDT literature does: no eigenvalue below l3 / 1000.
     let floor = l3 / 1000.0;
-    let l1 = eig.eigenvalues[order[0]].max(floor);
-    let l2 = eig.eigenvalues[order[1]].max(floor);
+    let l1 = eig.values[0].max(floor);
+    let l2 = eig.values[1].max(floor);
     let te = eigen_threshold;
     let shape = if l2 < te * l3 {
         Shape::Linear
@@ -55,15 +54,28 @@ pub fn classify(cell: &Cell, eigen_threshold: f64) -> Option<ShapedCell> {
     } else {
         Shape::Spherical
     };
-    let col = |k: usize| {
-        let c = eig.eigenvectors.column(order[k]);
-        [c[0], c[1], c[2]]
-    };
     Some(ShapedCell {
         mean: cell.mean,
         shape,
         eigenvalues: [l1, l2, l3],
-        normal: col(0),
-        axis: col(2),
+        normal: eig.e1,
+        axis: eig.e3,
     })
+}
+
+/// nalgebra's general solver, for the near-degenerate spectra the closed
+/// form leaves alone (see [`eigen`]).
+fn general(cov: &[[f64; 3]; 3]) -> eigen::Eigen {
+    let eig = SymmetricEigen::new(Matrix3::from_fn(|i, j| cov[i][j]));
+    let mut order = [0usize, 1, 2];
+    order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
+    let col = |k: usize| {
+        let c = eig.eigenvectors.column(order[k]);
+        [c[0], c[1], c[2]]
+    };
+    eigen::Eigen {
+        values: order.map(|k| eig.eigenvalues[k]),
+        e1: col(0),
+        e3: col(2),
+    }
 }

@@ -19,6 +19,7 @@ mod cli_bags;
 mod cli_common;
 mod cli_trees;
 mod clustering;
+mod descriptor_digests;
 mod descriptor_geometry;
 mod parity;
 mod parts;

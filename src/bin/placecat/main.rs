@@ -24,7 +24,25 @@ mod cli;
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> std::process::ExitCode {
+    keep_freed_memory();
     cli::main()
+}
+
+/// glibc returns freed blocks of a few MB to the kernel (mmap'd blocks, and
+/// the heap's top once 2x the mmap threshold is free), so every scan of a
+/// folder faulted its buffers in again: 28,500 page faults and a quarter
+/// of the CPU time of `describe` on 40 scans of 100k points (issue 20).
+/// Keeping freed memory for reuse costs nothing the process does not
+/// already hold at its peak.
+#[cfg(not(target_arch = "wasm32"))]
+fn keep_freed_memory() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: mallopt only sets allocator parameters; called before any
+    // thread starts.
+    unsafe {
+        libc::mallopt(libc::M_MMAP_THRESHOLD, 1 << 30);
+        libc::mallopt(libc::M_TRIM_THRESHOLD, 1 << 30);
+    }
 }
 
 // wasm-pack builds every target of the crate for wasm32; the CLI has no
