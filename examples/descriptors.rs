@@ -6,6 +6,7 @@
 //!     cargo run --release --example descriptors            # test seeds: the report
 //!     ... -- --only office   # dev seeds of the families whose name holds `office`, to stdout
 //!     ... -- --render        # docs/descriptors.md again from docs/descriptors.json
+//!     ... -- --family outdoor  # one family's dev and test seeds again, its rows replaced
 //!
 //! The dev run chooses each family's new preset and is kept in its own
 //! file, so that the test run (which reads it) stays near 15 minutes.
@@ -186,7 +187,7 @@ struct Figures {
     describe_ms: f64,
 }
 
-#[derive(Serialize, Deserialize)]
+#[derive(Serialize, Deserialize, Clone)]
 struct SetResult {
     family: String,
     sensor: String,
@@ -422,14 +423,11 @@ fn all_presets() -> Res<(Vec<&'static str>, Vec<DescriptorParams>)> {
     Ok((names, presets))
 }
 
-fn dev_run(only: Option<&str>) -> Res<DevRun> {
+fn dev_run(keep: impl Fn(&Family) -> bool) -> Res<DevRun> {
     let t0 = std::time::Instant::now();
     let (names, presets) = all_presets()?;
     let mut sets = vec![];
-    for f in families()
-        .iter()
-        .filter(|f| only.is_none_or(|o| f.name.contains(o)))
-    {
+    for f in families().iter().filter(|f| keep(f)) {
         for &seed in &DEV_SEEDS {
             eprintln!(
                 "dev {} seed {seed} ({:.0} s)",
@@ -446,7 +444,9 @@ fn dev_run(only: Option<&str>) -> Res<DevRun> {
     })
 }
 
-fn compute(dev_run: DevRun, dev_only: bool) -> Res<Report> {
+/// `with_real`: also the real-scan rows (not needed when one family is run
+/// again).
+fn compute(dev_run: DevRun, dev_only: bool, with_real: bool) -> Res<Report> {
     let t0 = std::time::Instant::now();
     let (names, presets) = all_presets()?;
     let new_presets: Vec<String> = names
@@ -513,7 +513,11 @@ fn compute(dev_run: DevRun, dev_only: bool) -> Res<Report> {
         choices,
         dev,
         test,
-        real: real_rows(&presets)?,
+        real: if with_real {
+            real_rows(&presets)?
+        } else {
+            vec![]
+        },
         seconds: t0.elapsed().as_secs_f64(),
     })
 }
@@ -556,7 +560,7 @@ fn target(family: &str, paper: f64) -> (String, f64) {
 fn render(r: &Report, notes: &str) -> Res<String> {
     let mut o = String::new();
     writeln!(o, "# Place descriptors beyond the paper (issue 18)\n")?;
-    writeln!(o, "Regenerate with `cargo run --release --example descriptors -- --dev` (the development seeds, `descriptors-dev.json`) then `cargo run --release --example descriptors` (the test seeds: this file and `descriptors.json`; {:.0} s for the test run on a two-core machine shared with five other builds; `-- --render` renders this file again from `descriptors.json`). Seeds fixed in [seeds.md](seeds.md) before any run: development 1, 2, 3; test 301 to 305. Every figure below is on the test seeds, each run once, whatever it showed, unless it says dev.\n", r.seconds)?;
+    writeln!(o, "Regenerate with `cargo run --release --example descriptors -- --dev` (the development seeds, `descriptors-dev.json`) then `cargo run --release --example descriptors` (the test seeds: this file and `descriptors.json`; {:.0} s for the test run on a two-core machine shared with five other builds; `-- --render` renders this file again from `descriptors.json`; `-- --family NAME` runs one family's dev and test seeds again and replaces only its rows, as was done for the outdoor site after commit 9df133b). Seeds fixed in [seeds.md](seeds.md) before any run: development 1, 2, 3; test 301 to 305. Every figure below is on the test seeds, each run once, whatever it showed, unless it says dev.\n", r.seconds)?;
     writeln!(
         o,
         "Presets run: {}. The paper's (and placecat's before this issue): {}. New: {}.\n",
@@ -777,8 +781,64 @@ const NOTES: &str = "Written after the one test run (presets of the `desc` branc
 - **The choice on the development seeds cost some points once**: for rooms of one building the dev seeds chose `free_space` (94.2 % on test), while `indoor_plus` gave 97.3 % on the test seeds. The chosen one is what section 1 reports.
 - **`free_space` alone** (the free-space slice without the NDT histogram's full weight) is never the best on the floors: 63.1 % on the school, as the paper's preset, 69.8 % on the office floor.
 - **`outdoor` and `outdoor_plus` cannot describe most indoor scans** (no voxel in their far range intervals): n/a on every set of the three room families and on 9 of the 10 office-floor sets; on the school's larger rooms they describe 27 of 30 sets and rank below `indoor_plus` there.
+- **Outdoor, run again on the site of commit 9df133b** (spruce crowns down to the ground, scans labelled by the place the vehicle stands; `--family outdoor`, the first run of these seeds on that site, nothing tuned; the other families' rows are those of the full run). On the dev seeds the four new presets tie at 95.0 % stride k-means (285 of 300 scans each), below the paper's `outdoor` and `indoor` (97.0 %); the argmax keeps the last of the tie in preset order, `free_space`. On the test seeds it gives 95.2 % against the paper's 96.6 % (hk-means++ 85.4 % against 91.3 %, room-level 1-NN 94.8 % against 95.8 %): **the outdoor target (not worse than the paper's) is now missed.** No new preset beats the paper's with the site's own sensor (`indoor_plus` 95.6 %, `warehouse` 96.2 %, `outdoor_plus` 96.4 %); with 16 beams all four do (95.6 to 96.8 % against 87.0 %). On the site before 9df133b `indoor_plus` was chosen and met it (93.8 % against 92.8 %).
 - **Small sets**: 45 scans a set indoors (one scan moves a figure by 2.2 points), 100 along a route; means over five test seeds. Differences of two or three points between presets are within that noise.
 ";
+
+/// Replaces the sets of `family` in `all` by `new`, where the old ones
+/// stood (at the end when there were none), so the other families' rows and
+/// their order stay as they were.
+fn splice_family(all: &mut Vec<SetResult>, family: &str, new: Vec<SetResult>) {
+    let at = all
+        .iter()
+        .position(|s| s.family == family)
+        .unwrap_or(all.len());
+    all.retain(|s| s.family != family);
+    let tail = all.split_off(at.min(all.len()));
+    all.extend(new);
+    all.extend(tail);
+}
+
+fn read_json<T: serde::de::DeserializeOwned>(path: &std::path::Path) -> Res<T> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()).into())
+}
+
+/// `--family NAME`: the dev seeds, the choice and the test seeds of one
+/// family (its name exactly) again, e.g. after its scene changed; only that
+/// family's rows of docs/descriptors-dev.json and docs/descriptors.json are
+/// replaced, and docs/descriptors.md is rendered again. The real-scan rows
+/// and the recorded run time are kept from the full run.
+fn rerun_family(docs: &std::path::Path, name: &str) -> Res<()> {
+    if !families().iter().any(|f| f.name == name) {
+        let names: Vec<_> = families().iter().map(|f| f.name).collect();
+        return Err(format!("--family {name:?}: no such family; there are {names:?}").into());
+    }
+    let dev_path = docs.join("descriptors-dev.json");
+    let report_path = docs.join("descriptors.json");
+    let mut dev_all: DevRun = read_json(&dev_path)?;
+    let mut report: Report = read_json(&report_path)?;
+    let dev = dev_run(|f| f.name == name)?;
+    splice_family(&mut dev_all.sets, name, dev.sets.clone());
+    let dev_seconds = dev.seconds;
+    let fresh = compute(dev, false, false)?;
+    splice_family(&mut report.dev, name, fresh.dev);
+    splice_family(&mut report.test, name, fresh.test);
+    for c in fresh.choices {
+        match report.choices.iter_mut().find(|x| x.family == c.family) {
+            Some(old) => *old = c,
+            None => report.choices.push(c),
+        }
+    }
+    std::fs::write(&dev_path, serde_json::to_string_pretty(&dev_all)?)?;
+    std::fs::write(&report_path, serde_json::to_string_pretty(&report)?)?;
+    std::fs::write(docs.join("descriptors.md"), render(&report, NOTES)?)?;
+    eprintln!(
+        "replaced {name} in docs/descriptors-dev.json and docs/descriptors.json, rendered docs/descriptors.md ({:.0} s dev, {:.0} s test)",
+        dev_seconds, fresh.seconds
+    );
+    Ok(())
+}
 
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().collect();
@@ -787,16 +847,23 @@ fn main() -> Res<()> {
         .iter()
         .position(|a| a == "--only")
         .and_then(|i| args.get(i + 1));
+    let family = args
+        .iter()
+        .position(|a| a == "--family")
+        .and_then(|i| args.get(i + 1));
     let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let dev_path = docs.join("descriptors-dev.json");
     if dev_only || only.is_some() {
-        let dev = dev_run(only.map(String::as_str))?;
+        let dev = dev_run(|f| only.is_none_or(|o| f.name.contains(o.as_str())))?;
         if only.is_none() {
             std::fs::write(&dev_path, serde_json::to_string_pretty(&dev)?)?;
             eprintln!("wrote docs/descriptors-dev.json ({:.0} s)", dev.seconds);
         }
-        println!("{}", render(&compute(dev, true)?, NOTES)?);
+        println!("{}", render(&compute(dev, true, true)?, NOTES)?);
         return Ok(());
+    }
+    if let Some(name) = family {
+        return rerun_family(&docs, name);
     }
     if args.iter().any(|a| a == "--render") {
         let path = docs.join("descriptors.json");
@@ -809,7 +876,7 @@ fn main() -> Res<()> {
     }
     let text = std::fs::read_to_string(&dev_path)
         .map_err(|e| format!("{}: {e} (run with --dev first)", dev_path.display()))?;
-    let report = compute(serde_json::from_str(&text)?, false)?;
+    let report = compute(serde_json::from_str(&text)?, false, true)?;
     let md = render(&report, NOTES)?;
     std::fs::write(
         docs.join("descriptors.json"),

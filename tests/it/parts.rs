@@ -203,3 +203,161 @@ fn descriptors_and_models_with_parts_round_trip() {
     let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
     assert!(e.to_string().contains("part values"), "{e}");
 }
+
+/// The presets with extra parts; `free_space` has NDT weight 0, which
+/// takes its own early return in `Space::to_centre`.
+const PARTS_PRESETS: [&str; 4] = ["indoor_plus", "warehouse", "outdoor_plus", "free_space"];
+
+/// A few simulated warehouse scans along the aisles (every preset, the
+/// outdoor ones too, describes them), simulated once for the tests here.
+fn warehouse_points() -> &'static [Vec<[f32; 3]>] {
+    use placecat::sim::{SceneKind, SimParams, Simulation};
+    static POINTS: std::sync::OnceLock<Vec<Vec<[f32; 3]>>> = std::sync::OnceLock::new();
+    POINTS.get_or_init(|| {
+        let mut p = SimParams::new(SceneKind::Warehouse, 5);
+        p.scans = 10;
+        let sim = Simulation::new(&p).unwrap();
+        (0..sim.len()).map(|i| sim.scan(i).points).collect()
+    })
+}
+
+fn warehouse_scans(preset: &DescriptorParams) -> Vec<Descriptor> {
+    warehouse_points()
+        .iter()
+        .map(|points| describe(points, preset).unwrap())
+        .collect()
+}
+
+fn close(a: f32, b: f32) -> bool {
+    (a - b).abs() <= 1e-5 * a.abs().max(b.abs()).max(1e-3)
+}
+
+/// k-means and the tree without a matrix measure a scan against a centre
+/// put at another scan with `Space::to_centre`. A centre holds one
+/// orientation (scan i's first candidate) while the matrix's Delta is the
+/// best over both scans' candidates, so the guarantee is: to_centre from
+/// scan i is Delta from i reduced to its first candidate, never below
+/// Delta(i, j), and equal to it for the parts alone (`free_space`), which
+/// have no orientations.
+#[test]
+fn a_centre_at_a_scan_is_its_first_orientation_at_the_matrix_delta() {
+    use placecat::distance::Space;
+    for name in PARTS_PRESETS {
+        let params = DescriptorParams::preset(name).unwrap();
+        let opts = DistanceOptions::from(&params);
+        let ds = warehouse_scans(&params);
+        let space = Space::new(&ds, opts).unwrap();
+        let m = space.matrix();
+        let (mut apart, mut above, mut most) = (0, 0, 1f32);
+        for i in 0..ds.len() {
+            let centre = space.centre_of(i);
+            let first = Descriptor {
+                matrices: ds[i].matrices[..1].to_vec(),
+                ..ds[i].clone()
+            };
+            for (j, dj) in ds.iter().enumerate() {
+                let (d, _) = space.to_centre(&centre, j);
+                let delta = m.get(i, j);
+                let one = Space::new(&[first.clone(), dj.clone()], opts)
+                    .unwrap()
+                    .delta(0, 1);
+                assert!(
+                    close(d, one),
+                    "{name}: to_centre(centre_of({i}), {j}) = {d}, first orientation {one}"
+                );
+                assert!(
+                    d >= delta || close(d, delta),
+                    "{name}: {d} below Delta({i}, {j}) = {delta}"
+                );
+                if params.ndt_weight == 0.0 {
+                    assert!(
+                        close(d, delta),
+                        "{name}: {d} against Delta({i}, {j}) = {delta}"
+                    );
+                }
+                apart += usize::from(d > 0.0);
+                above += usize::from(!close(d, delta));
+                if delta > 0.0 {
+                    most = most.max(d / delta);
+                }
+            }
+        }
+        // Distinct scans: every off-diagonal pair is apart.
+        assert_eq!(apart, ds.len() * (ds.len() - 1), "{name}");
+        eprintln!(
+            "{name}: to_centre above Delta for {above} of {} pairs, at most {most:.3} times",
+            ds.len() * ds.len()
+        );
+    }
+}
+
+/// Above MATRIX_LIMIT the collection runs hierarchical k-means++ without
+/// the matrix (`fit_without_matrix`) and k-means as below it. On the same
+/// scans the tree has to be the one the matrix path builds (nodes up to
+/// EXACT_DIAMETER_LIMIT get exact diameters), and k-means on every scan
+/// repeated in place past the limit has to give each copy its scan's label
+/// (stride seeds fall on the same scans) and r times the cost.
+#[test]
+fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
+    use placecat::cluster::hkmeans::HkMeansParams;
+    use placecat::cluster::{HierarchicalKMeans, KMeansParams, Seeding};
+    use placecat::collection::MATRIX_LIMIT;
+    use placecat::distance::Space;
+    use placecat::Collection;
+    for name in PARTS_PRESETS {
+        let params = DescriptorParams::preset(name).unwrap();
+        let ds = warehouse_scans(&params);
+        let space = Space::new(&ds, DistanceOptions::from(&params)).unwrap();
+        let m = space.matrix();
+        for seed in 0..3 {
+            let with = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(seed)).unwrap();
+            let without =
+                HierarchicalKMeans::fit_without_matrix(&space, &HkMeansParams::new(seed)).unwrap();
+            assert_eq!(with.nodes.len(), without.nodes.len(), "{name} seed {seed}");
+            for (a, b) in with.nodes.iter().zip(&without.nodes) {
+                assert_eq!(a.members, b.members, "{name} seed {seed}");
+                assert!(
+                    close(a.height, b.height),
+                    "{name}: {} {}",
+                    a.height,
+                    b.height
+                );
+            }
+            for k in 2..=4 {
+                assert_eq!(
+                    with.cut_k(k).unwrap().labels,
+                    without.cut_k(k).unwrap().labels,
+                    "{name} seed {seed} k {k}"
+                );
+            }
+        }
+
+        let r = MATRIX_LIMIT / ds.len() + 1;
+        let named = |copies: usize| {
+            ds.iter()
+                .enumerate()
+                .flat_map(move |(i, d)| (0..copies).map(move |c| (format!("s{i}_{c}"), d.clone())))
+        };
+        let mut small = Collection::from_parts(params.clone(), named(1)).unwrap();
+        let mut big = Collection::from_parts(params.clone(), named(r)).unwrap();
+        assert!(small.uses_matrix() && !big.uses_matrix());
+        let kp = KMeansParams::new(3).seeding(Seeding::Stride);
+        let (a, b) = (small.kmeans(&kp).unwrap(), big.kmeans(&kp).unwrap());
+        let mut kinds = a.labels.clone();
+        kinds.sort();
+        kinds.dedup();
+        assert_eq!(kinds, [0, 1, 2], "{name}: {:?}", a.labels);
+        for (i, &l) in b.labels.iter().enumerate() {
+            assert_eq!(l, a.labels[i / r], "{name}: copy {i} of scan {}", i / r);
+        }
+        // Centres are means summed in f32 over r copies of each scan, so
+        // they differ from the small set's by rounding: 1e-3, not exact.
+        let want = a.cost * r as f64;
+        assert!(
+            (b.cost - want).abs() <= 1e-3 * want,
+            "{name}: cost {} above the limit, {want} = {r} x {} below",
+            b.cost,
+            a.cost
+        );
+    }
+}
