@@ -112,8 +112,8 @@ const scans = ['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd', 'velodyne_p
 for (const s of scans) set.add(s);
 same('Summary', scans[0].summary());
 same('DescriptorParams', pc.presetParams('outdoor'));
-// A preset beyond the paper holds the optional keys too: all declared.
-assert.deepEqual(Object.keys(pc.presetParams('indoor_plus')).sort(), declared('DescriptorParams', true), 'indoor_plus params');
+// free_space (NDT weight 0, parts) holds the optional keys too: all declared.
+assert.deepEqual(Object.keys(pc.presetParams('free_space')).sort(), declared('DescriptorParams', true), 'free_space params');
 same('DescriptorParams', set.params());
 same('KMeansResult', set.kmeans(2, 'stride', 0));
 const tree = set.hkmeans(0);
