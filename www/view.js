@@ -127,7 +127,7 @@ export class View {
   errors(s) {
     $('errors').replaceChildren(...s.errors.map((e) => Object.assign(document.createElement('li'), { textContent: errorText(e) })));
     $('errors-box').hidden = s.errors.length === 0;
-    $('errors-summary').textContent = `${s.errors.length} file(s) skipped`;
+    $('errors-summary').textContent = `${s.errors.length} skipped (files, or clouds of a bag)`;
   }
 
   /** Progress of a run (its clock starts at 0 done). @param {number} done @param {number} total @param {'running' | 'done' | 'cancelled'} phase @param {string} [unit] what is counted */
