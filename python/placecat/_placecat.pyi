@@ -145,19 +145,7 @@ class Collection:
         """k, rule, scores, one_category: the CLI's default choice."""
     def dbscan(self, eps: float, min_points: int) -> npt.NDArray[np.int32]: ...
     def medoids(self, labels: _Labels) -> List[Tuple[int, int]]: ...
-    def describe_bytes(
-    data: bytes,
-    name: str,
-    params: _Params = None,
-    *,
-    lenient: bool = False,
-    max_points: Optional[int] = None,
-    max_bytes: Optional[int] = None,
-    origin: Optional[Tuple[float, float, float]] = None,
-) -> Descriptor:
-    """Read and describe a scan from its file's bytes (GIL released)."""
-
-def evaluate(self, truth: Sequence[str], labels: _Labels) -> Dict[str, Any]: ...
+    def evaluate(self, truth: Sequence[str], labels: _Labels) -> Dict[str, Any]: ...
     def build_model(self, labels: _Labels, names: Optional[_Names] = None) -> Model: ...
 
 class Model:
