@@ -79,17 +79,21 @@ export function describeBag(wasm, t, post) {
   let kept = 0, failed = 0, tries = 0;
   try {
     const progress = () => ({ met: clouds.met, total: clouds.total });
-    for (;;) {
-      /** @type {ScanResult | undefined} */
-      let scan;
+    /** The next cloud ({scan: undefined} at the end), or null for a bad one, posted and skipped. */
+    const readNext = () => {
       try {
-        scan = nextOf(clouds);
+        return { scan: nextOf(clouds) };
       } catch (e) {
         // The reader goes on after a bad cloud; this only guards against one that would not.
         if (++failed > clouds.total + 100) throw e;
         post({ error: String(/** @type {any} */ (e)?.message ?? e), ...progress() }, []);
-        continue;
+        return null;
       }
+    };
+    for (;;) {
+      const first = readNext();
+      if (!first) continue;
+      let scan = first.scan;
       tries++;
       if (!scan) break;
       if (t.byPreset && chosen.preset === undefined) {
@@ -104,13 +108,9 @@ export function describeBag(wasm, t, post) {
           }
           // This cloud read again under the new preset: one that fails now is
           // posted and skipped like any bad cloud, not the end of the bag.
-          try {
-            scan = nextOf(clouds);
-          } catch (e) {
-            failed++;
-            post({ error: String(/** @type {any} */ (e)?.message ?? e), ...progress() }, []);
-            continue;
-          }
+          const again = readNext();
+          if (!again) continue;
+          scan = again.scan;
           if (!scan) break;
         }
       }
