@@ -7,6 +7,8 @@
 //!     ... -- --only office   # dev seeds of the families whose name holds `office`, to stdout
 //!     ... -- --render        # docs/descriptors.md again from docs/descriptors.json
 //!     ... -- --family outdoor  # one family's dev and test seeds again, its rows replaced
+//!     ... -- --round 2 --dev   # the second round (docs/seeds.md): dev seeds 1-6
+//!     ... -- --round 2         # its test seeds 311-315, run once: docs/descriptors-2.*
 //!
 //! The dev run chooses each family's new preset and is kept in its own
 //! file, so that the test run (which reads it) stays near 15 minutes.
@@ -39,9 +41,54 @@ mod real;
 /// The example's error: every failure is reported by `main`, none panics.
 type Res<T> = Result<T, Box<dyn std::error::Error>>;
 
-/// Seeds fixed in docs/seeds.md (issue 18) before any run.
-const DEV_SEEDS: [u64; 3] = [1, 2, 3];
-const TEST_SEEDS: [u64; 5] = [301, 302, 303, 304, 305];
+/// A round of the evaluation: its seeds, fixed in docs/seeds.md before
+/// any run of it, its files, and how it picks a family's new preset.
+struct Round {
+    /// 1 or 2.
+    number: u32,
+    dev_seeds: &'static [u64],
+    test_seeds: &'static [u64],
+    /// Under docs/: the dev run, the report's data and its markdown.
+    dev_file: &'static str,
+    report_file: &'static str,
+    md_file: &'static str,
+    /// Of new presets equal on dev stride k-means, keep the one with the
+    /// best dev hk-means++, then room-level 1-NN (round 2, written down
+    /// before its test run); round 1 kept the later in PRESETS.
+    tie_break: bool,
+}
+
+/// Issue 18's first round: test seeds 301-305, run once.
+const FIRST: Round = Round {
+    number: 1,
+    dev_seeds: &[1, 2, 3],
+    test_seeds: &[301, 302, 303, 304, 305],
+    dev_file: "descriptors-dev.json",
+    report_file: "descriptors.json",
+    md_file: "descriptors.md",
+    tie_break: false,
+};
+
+/// The second round (after 301-305 had been seen): new development seeds
+/// 4-6 beside 1-3, fresh test seeds 311-315.
+const SECOND: Round = Round {
+    number: 2,
+    dev_seeds: &[1, 2, 3, 4, 5, 6],
+    test_seeds: &[311, 312, 313, 314, 315],
+    dev_file: "descriptors-dev-2.json",
+    report_file: "descriptors-2.json",
+    md_file: "descriptors-2.md",
+    tie_break: true,
+};
+
+impl Round {
+    fn seeds_text(&self, seeds: &[u64]) -> String {
+        match (seeds.first(), seeds.last()) {
+            (Some(a), Some(b)) => format!("{a}-{b}"),
+            _ => String::new(),
+        }
+    }
+}
 /// The presets of the paper and of placecat before issue 18.
 const PAPER_PRESETS: [&str; 4] = ["indoor", "outdoor", "perception_oru", "indoor_bands"];
 /// Route neighbours left out of a route scan's 1-NN, at the default
@@ -423,12 +470,12 @@ fn all_presets() -> Res<(Vec<&'static str>, Vec<DescriptorParams>)> {
     Ok((names, presets))
 }
 
-fn dev_run(keep: impl Fn(&Family) -> bool) -> Res<DevRun> {
+fn dev_run(round: &Round, keep: impl Fn(&Family) -> bool) -> Res<DevRun> {
     let t0 = std::time::Instant::now();
     let (names, presets) = all_presets()?;
     let mut sets = vec![];
     for f in families().iter().filter(|f| keep(f)) {
-        for &seed in &DEV_SEEDS {
+        for &seed in round.dev_seeds {
             eprintln!(
                 "dev {} seed {seed} ({:.0} s)",
                 f.name,
@@ -446,7 +493,7 @@ fn dev_run(keep: impl Fn(&Family) -> bool) -> Res<DevRun> {
 
 /// `with_real`: also the real-scan rows (not needed when one family is run
 /// again).
-fn compute(dev_run: DevRun, dev_only: bool, with_real: bool) -> Res<Report> {
+fn compute(round: &Round, dev_run: DevRun, dev_only: bool, with_real: bool) -> Res<Report> {
     let t0 = std::time::Instant::now();
     let (names, presets) = all_presets()?;
     let new_presets: Vec<String> = names
@@ -456,8 +503,8 @@ fn compute(dev_run: DevRun, dev_only: bool, with_real: bool) -> Res<Report> {
         .collect();
     if dev_run.presets != names {
         return Err(format!(
-            "docs/descriptors-dev.json holds presets {:?}, there are {names:?}: run with --dev first",
-            dev_run.presets
+            "docs/{} holds presets {:?}, there are {names:?}: run with --dev first",
+            round.dev_file, dev_run.presets
         )
         .into());
     }
@@ -479,10 +526,29 @@ fn compute(dev_run: DevRun, dev_only: bool, with_real: bool) -> Res<Report> {
                     v
                 }
             };
+            // Round 2's tie-break: dev hk-means++, then room-level 1-NN
+            // (equal stride means are equal to the last bit: the same
+            // scans right in the same order).
+            let then = |p: &str| {
+                if round.tie_break {
+                    (
+                        mean_of(&sets, p, |x| x.hk_accuracy),
+                        mean_of(&sets, p, |x| x.nn_room),
+                    )
+                } else {
+                    (0.0, 0.0)
+                }
+            };
             let best_new = new_presets
                 .iter()
                 .filter(|p| score(p) > f64::NEG_INFINITY)
-                .max_by(|a, b| score(a).total_cmp(&score(b)))
+                .max_by(|a, b| {
+                    let (ta, tb) = (then(a), then(b));
+                    score(a)
+                        .total_cmp(&score(b))
+                        .then(ta.0.total_cmp(&tb.0))
+                        .then(ta.1.total_cmp(&tb.1))
+                })
                 .cloned();
             Choice {
                 family: f.name.into(),
@@ -495,7 +561,7 @@ fn compute(dev_run: DevRun, dev_only: bool, with_real: bool) -> Res<Report> {
     if !dev_only {
         for f in &fams {
             for sensor in std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()) {
-                for &seed in &TEST_SEEDS {
+                for &seed in round.test_seeds {
                     eprintln!(
                         "test {} {} seed {seed} ({:.0} s)",
                         f.name,
@@ -557,10 +623,32 @@ fn target(family: &str, paper: f64) -> (String, f64) {
     }
 }
 
-fn render(r: &Report, notes: &str) -> Res<String> {
+fn render(round: &Round, r: &Report, notes: &str) -> Res<String> {
     let mut o = String::new();
-    writeln!(o, "# Place descriptors beyond the paper (issue 18)\n")?;
-    writeln!(o, "Regenerate with `cargo run --release --example descriptors -- --dev` (the development seeds, `descriptors-dev.json`) then `cargo run --release --example descriptors` (the test seeds: this file and `descriptors.json`; {:.0} s for the test run on a two-core machine shared with five other builds; `-- --render` renders this file again from `descriptors.json`; `-- --family NAME` runs one family's dev and test seeds again and replaces only its rows, as was done for the outdoor site after commit 9df133b). Seeds fixed in [seeds.md](seeds.md) before any run: development 1, 2, 3; test 301 to 305. Every figure below is on the test seeds, each run once, whatever it showed, unless it says dev.\n", r.seconds)?;
+    let (title, dev_cmd, test_cmd) = match round.number {
+        1 => ("", "-- --dev".to_string(), String::new()),
+        n => (
+            ", second round",
+            format!("-- --round {n} --dev"),
+            format!(" -- --round {n}"),
+        ),
+    };
+    let dev_list = round
+        .dev_seeds
+        .iter()
+        .map(u64::to_string)
+        .collect::<Vec<_>>()
+        .join(", ");
+    let tests = round.seeds_text(round.test_seeds);
+    let (t0, t1) = (
+        round.test_seeds[0],
+        round.test_seeds[round.test_seeds.len() - 1],
+    );
+    writeln!(
+        o,
+        "# Place descriptors beyond the paper (issue 18){title}\n"
+    )?;
+    writeln!(o, "Regenerate with `cargo run --release --example descriptors {dev_cmd}` (the development seeds, `{}`) then `cargo run --release --example descriptors{test_cmd}` (the test seeds: this file and `{}`; {:.0} s for the test run on a two-core machine shared with five other builds; `-- --render` renders this file again from `{}`; `-- --family NAME` runs one family's dev and test seeds again and replaces only its rows, as was done for the outdoor site after commit 9df133b). Seeds fixed in [seeds.md](seeds.md) before any run: development {dev_list}; test {t0} to {t1}. Every figure below is on the test seeds, each run once, whatever it showed, unless it says dev.\n", round.dev_file, round.report_file, r.seconds, round.report_file)?;
     writeln!(
         o,
         "Presets run: {}. The paper's (and placecat's before this issue): {}. New: {}.\n",
@@ -581,38 +669,9 @@ fn render(r: &Report, notes: &str) -> Res<String> {
         }
     )?;
     writeln!(o, "**Method.** Families: indoor rooms of one building, of many buildings (`--buildings many`), of varied plans (`--buildings varied`: mirrored layouts, L-shaped rooms), an office floor (`--scene office-floor`: corridor, private office, meeting room, open plan, restroom; doors open into the corridor; written while the descriptors were being built, by another hand), school floors written after the descriptors were committed (`--scene school`: corridor with lockers, classroom, library, cafeteria, staff room), the warehouse and the outdoor site. No descriptor or preset was developed on the office or school floors. Indoor families: {KIND_SCANS} scans a kind, {ROOM_SCANS} per room at free spots anywhere in it ({} scans a set); routes: {ROUTE_SCANS} scans (a third of `placecat simulate`'s default). Sensors: each scene's own (128-beam OS0 indoors and in the warehouse at 1.0 to 1.4 m, 64-beam KITTI-like outdoors at 1.6 to 1.95 m); the school (the family written last) also with `--beams 16/32/64` and `--sensor-height 0.3/1.8`; rooms of many buildings and outdoors also with 16 beams; the office floor at 0.3 m; the warehouse with 32 beams; rooms of one building and of varied plans only with their own sensor. **Subsampled** (fewer scans, not every family with every sensor) so that the whole run stays near 15 minutes on a two-core machine shared by six builds; the sets are small, so a figure moves by 1/45 (indoor) or 1/100 (routes) per scan. Measures at the true number of kinds: deterministic (stride) k-means, hierarchical k-means++ (mean of clustering seeds 0-9), accuracy and ARI; 1-NN leave-one-out with no neighbour from the scan's room (routes: none within {ROUTE_WINDOW} scans at the default density of 300 a route, i.e. within {} of the {ROUTE_SCANS} scans here). The new preset reported for a family is the one with the best stride k-means on the dev seeds with the scene's own sensor (table in section 5).\n", 5 * KIND_SCANS, (ROUTE_WINDOW * ROUTE_SCANS).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS))?;
-    writeln!(o, "## 1. The best new preset against the paper's, per family (own sensor, mean of test seeds 301-305)\n")?;
-    writeln!(o, "| family | preset | stride k-means | ARI | hk-means++ | ARI | room-level 1-NN | target (stride k-means) | met |\n|---|---|---|---|---|---|---|---|---|")?;
-    for c in &r.choices {
-        let sets = sets_of(&r.test, &c.family, "own");
-        let paper = mean_of(&sets, &c.paper, |x| x.stride_accuracy);
-        let (text, bar) = target(&c.family, paper);
-        let mut rows = vec![(format!("`{}` (paper)", c.paper), c.paper.clone())];
-        if let Some(b) = &c.best_new {
-            rows.push((format!("`{b}` (new)"), b.clone()));
-        }
-        for (label, p) in rows {
-            let acc = mean_of(&sets, &p, |x| x.stride_accuracy);
-            let met = if p == c.paper {
-                "-".to_string()
-            } else if acc + 1e-9 >= bar {
-                "yes".into()
-            } else {
-                "**no**".into()
-            };
-            writeln!(
-                o,
-                "| {} | {label} | {} | {:.3} | {} | {:.3} | {} | {text} | {met} |",
-                c.family,
-                pct(acc),
-                mean_of(&sets, &p, |x| x.stride_ari),
-                pct(mean_of(&sets, &p, |x| x.hk_accuracy)),
-                mean_of(&sets, &p, |x| x.hk_ari),
-                pct(mean_of(&sets, &p, |x| x.nn_room))
-            )?;
-        }
-    }
-    writeln!(o, "\n## 2. Every preset, every family and sensor (mean of test seeds 301-305)\n\nEach cell: stride k-means / hk-means++ / room-level 1-NN, in %.\n")?;
+    writeln!(o, "## 1. The best new preset against the paper's, per family (own sensor, mean of test seeds {tests})\n")?;
+    render_best(&mut o, r)?;
+    writeln!(o, "\n## 2. Every preset, every family and sensor (mean of test seeds {tests})\n\nEach cell: stride k-means / hk-means++ / room-level 1-NN, in %.\n")?;
     for c in &r.choices {
         writeln!(o, "### {}\n", c.family)?;
         let sensors = sensors_of(&r.test, &c.family);
@@ -695,7 +754,7 @@ fn render(r: &Report, notes: &str) -> Res<String> {
     if !any {
         writeln!(o, "- none")?;
     }
-    writeln!(o, "\n## 5. Development seeds (1-3, own sensor): the choice of the new preset\n\n| family | preset | stride k-means | hk-means++ | room-level 1-NN | describe ms a scan (wall time in a worker on the busy machine: a rough guide, not a benchmark) |\n|---|---|---|---|---|---|")?;
+    writeln!(o, "\n## 5. Development seeds ({}, own sensor): the choice of the new preset\n\n| family | preset | stride k-means | hk-means++ | room-level 1-NN | describe ms a scan (wall time in a worker on the busy machine: a rough guide, not a benchmark) |\n|---|---|---|---|---|---|", round.seeds_text(round.dev_seeds))?;
     for c in &r.choices {
         let sets = sets_of(&r.dev, &c.family, "own");
         for p in &r.presets {
@@ -715,7 +774,7 @@ fn render(r: &Report, notes: &str) -> Res<String> {
             )?;
         }
     }
-    writeln!(o, "\n## 6. Every test-seed figure\n\nEach cell: stride k-means / hk-means++ / room-level 1-NN, in %; ARI and plain 1-NN are in `descriptors.json`.\n\n| family | sensor | preset | {} |\n|---|---|---|{}", TEST_SEEDS.map(|s| s.to_string()).join(" | "), "---|".repeat(TEST_SEEDS.len()))?;
+    writeln!(o, "\n## 6. Every test-seed figure\n\nEach cell: stride k-means / hk-means++ / room-level 1-NN, in %; ARI and plain 1-NN are in `{}`.\n\n| family | sensor | preset | {} |\n|---|---|---|{}", round.report_file, round.test_seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(" | "), "---|".repeat(round.test_seeds.len()))?;
     for c in &r.choices {
         for s in sensors_of(&r.test, &c.family) {
             let sets = sets_of(&r.test, &c.family, &s);
@@ -741,6 +800,42 @@ fn render(r: &Report, notes: &str) -> Res<String> {
         }
     }
     Ok(o)
+}
+
+/// Section 1's table: per family, the paper's preset and the new one
+/// chosen on the dev seeds, on the test seeds with the scene's own sensor.
+fn render_best(o: &mut String, r: &Report) -> Res<()> {
+    writeln!(o, "| family | preset | stride k-means | ARI | hk-means++ | ARI | room-level 1-NN | target (stride k-means) | met |\n|---|---|---|---|---|---|---|---|---|")?;
+    for c in &r.choices {
+        let sets = sets_of(&r.test, &c.family, "own");
+        let paper = mean_of(&sets, &c.paper, |x| x.stride_accuracy);
+        let (text, bar) = target(&c.family, paper);
+        let mut rows = vec![(format!("`{}` (paper)", c.paper), c.paper.clone())];
+        if let Some(b) = &c.best_new {
+            rows.push((format!("`{b}` (new)"), b.clone()));
+        }
+        for (label, p) in rows {
+            let acc = mean_of(&sets, &p, |x| x.stride_accuracy);
+            let met = if p == c.paper {
+                "-".to_string()
+            } else if acc + 1e-9 >= bar {
+                "yes".into()
+            } else {
+                "**no**".into()
+            };
+            writeln!(
+                o,
+                "| {} | {label} | {} | {:.3} | {} | {:.3} | {} | {text} | {met} |",
+                c.family,
+                pct(acc),
+                mean_of(&sets, &p, |x| x.stride_ari),
+                pct(mean_of(&sets, &p, |x| x.hk_accuracy)),
+                mean_of(&sets, &p, |x| x.hk_ari),
+                pct(mean_of(&sets, &p, |x| x.nn_room))
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// The presets that could not describe every scan of a set (n/a above):
@@ -804,24 +899,63 @@ fn read_json<T: serde::de::DeserializeOwned>(path: &std::path::Path) -> Res<T> {
     serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()).into())
 }
 
+/// What did not work in round 2, in words, written after its one test run.
+const NOTES_2: &str = "(to be written after the one test run of seeds 311-315)
+";
+
+fn notes_of(round: &Round) -> &'static str {
+    if round.number == 1 {
+        NOTES
+    } else {
+        NOTES_2
+    }
+}
+
+/// A round's markdown. Round 1's keeps its six sections as they were and,
+/// once round 2 has run, ends with round 2's summary table.
+fn markdown(docs: &std::path::Path, round: &Round, report: &Report) -> Res<String> {
+    let mut md = render(round, report, notes_of(round))?;
+    let second = docs.join(SECOND.report_file);
+    if round.number == 1 && second.exists() {
+        let r2: Report = read_json(&second)?;
+        writeln!(md, "\n## 7. Second round: the best new preset against the paper's (own sensor, mean of test seeds {})\n\nPresets chosen on the dev seeds {} (ties broken by dev hk-means++, then room-level 1-NN); every figure of that round, per sensor and seed, and what did not work, are in [descriptors-2.md](descriptors-2.md).\n", SECOND.seeds_text(SECOND.test_seeds), SECOND.seeds_text(SECOND.dev_seeds))?;
+        render_best(&mut md, &r2)?;
+    }
+    Ok(md)
+}
+
+/// Writes a round's report data and markdown; after round 2, round 1's
+/// markdown again (its section 7).
+fn write_report(docs: &std::path::Path, round: &Round, report: &Report) -> Res<()> {
+    std::fs::write(
+        docs.join(round.report_file),
+        serde_json::to_string_pretty(report)?,
+    )?;
+    std::fs::write(docs.join(round.md_file), markdown(docs, round, report)?)?;
+    if round.number != 1 {
+        let first: Report = read_json(&docs.join(FIRST.report_file))?;
+        std::fs::write(docs.join(FIRST.md_file), markdown(docs, &FIRST, &first)?)?;
+    }
+    Ok(())
+}
+
 /// `--family NAME`: the dev seeds, the choice and the test seeds of one
 /// family (its name exactly) again, e.g. after its scene changed; only that
-/// family's rows of docs/descriptors-dev.json and docs/descriptors.json are
-/// replaced, and docs/descriptors.md is rendered again. The real-scan rows
-/// and the recorded run time are kept from the full run.
-fn rerun_family(docs: &std::path::Path, name: &str) -> Res<()> {
+/// family's rows of the round's dev and report data are replaced, and its
+/// markdown is rendered again. The real-scan rows and the recorded run
+/// time are kept from the full run.
+fn rerun_family(docs: &std::path::Path, round: &Round, name: &str) -> Res<()> {
     if !families().iter().any(|f| f.name == name) {
         let names: Vec<_> = families().iter().map(|f| f.name).collect();
         return Err(format!("--family {name:?}: no such family; there are {names:?}").into());
     }
-    let dev_path = docs.join("descriptors-dev.json");
-    let report_path = docs.join("descriptors.json");
+    let dev_path = docs.join(round.dev_file);
     let mut dev_all: DevRun = read_json(&dev_path)?;
-    let mut report: Report = read_json(&report_path)?;
-    let dev = dev_run(|f| f.name == name)?;
+    let mut report: Report = read_json(&docs.join(round.report_file))?;
+    let dev = dev_run(round, |f| f.name == name)?;
     splice_family(&mut dev_all.sets, name, dev.sets.clone());
     let dev_seconds = dev.seconds;
-    let fresh = compute(dev, false, false)?;
+    let fresh = compute(round, dev, false, false)?;
     splice_family(&mut report.dev, name, fresh.dev);
     splice_family(&mut report.test, name, fresh.test);
     for c in fresh.choices {
@@ -831,61 +965,61 @@ fn rerun_family(docs: &std::path::Path, name: &str) -> Res<()> {
         }
     }
     std::fs::write(&dev_path, serde_json::to_string_pretty(&dev_all)?)?;
-    std::fs::write(&report_path, serde_json::to_string_pretty(&report)?)?;
-    std::fs::write(docs.join("descriptors.md"), render(&report, NOTES)?)?;
+    write_report(docs, round, &report)?;
     eprintln!(
-        "replaced {name} in docs/descriptors-dev.json and docs/descriptors.json, rendered docs/descriptors.md ({:.0} s dev, {:.0} s test)",
-        dev_seconds, fresh.seconds
+        "replaced {name} in docs/{} and docs/{}, rendered docs/{} ({:.0} s dev, {:.0} s test)",
+        round.dev_file, round.report_file, round.md_file, dev_seconds, fresh.seconds
     );
     Ok(())
 }
 
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().collect();
+    let value = |flag: &str| {
+        args.iter()
+            .position(|a| a == flag)
+            .and_then(|i| args.get(i + 1))
+    };
     let dev_only = args.iter().any(|a| a == "--dev");
-    let only = args
-        .iter()
-        .position(|a| a == "--only")
-        .and_then(|i| args.get(i + 1));
-    let family = args
-        .iter()
-        .position(|a| a == "--family")
-        .and_then(|i| args.get(i + 1));
+    let only = value("--only");
+    let family = value("--family");
+    let round = match value("--round").map(String::as_str) {
+        None | Some("1") => &FIRST,
+        Some("2") => &SECOND,
+        Some(other) => return Err(format!("--round {other}: there are rounds 1 and 2").into()),
+    };
     let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let dev_path = docs.join("descriptors-dev.json");
+    let dev_path = docs.join(round.dev_file);
     if dev_only || only.is_some() {
-        let dev = dev_run(|f| only.is_none_or(|o| f.name.contains(o.as_str())))?;
+        let dev = dev_run(round, |f| only.is_none_or(|o| f.name.contains(o.as_str())))?;
         if only.is_none() {
             std::fs::write(&dev_path, serde_json::to_string_pretty(&dev)?)?;
-            eprintln!("wrote docs/descriptors-dev.json ({:.0} s)", dev.seconds);
+            eprintln!("wrote docs/{} ({:.0} s)", round.dev_file, dev.seconds);
         }
-        println!("{}", render(&compute(dev, true, true)?, NOTES)?);
+        println!(
+            "{}",
+            render(round, &compute(round, dev, true, true)?, notes_of(round))?
+        );
         return Ok(());
     }
     if let Some(name) = family {
-        return rerun_family(&docs, name);
+        return rerun_family(&docs, round, name);
     }
     if args.iter().any(|a| a == "--render") {
-        let path = docs.join("descriptors.json");
-        let text =
-            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-        let report: Report = serde_json::from_str(&text)?;
-        std::fs::write(docs.join("descriptors.md"), render(&report, NOTES)?)?;
-        eprintln!("rendered docs/descriptors.md from docs/descriptors.json");
+        let report: Report = read_json(&docs.join(round.report_file))?;
+        std::fs::write(docs.join(round.md_file), markdown(&docs, round, &report)?)?;
+        eprintln!(
+            "rendered docs/{} from docs/{}",
+            round.md_file, round.report_file
+        );
         return Ok(());
     }
-    let text = std::fs::read_to_string(&dev_path)
-        .map_err(|e| format!("{}: {e} (run with --dev first)", dev_path.display()))?;
-    let report = compute(serde_json::from_str(&text)?, false, true)?;
-    let md = render(&report, NOTES)?;
-    std::fs::write(
-        docs.join("descriptors.json"),
-        serde_json::to_string_pretty(&report)?,
-    )?;
-    std::fs::write(docs.join("descriptors.md"), md)?;
+    let dev: DevRun = read_json(&dev_path).map_err(|e| format!("{e} (run with --dev first)"))?;
+    let report = compute(round, dev, false, true)?;
+    write_report(&docs, round, &report)?;
     eprintln!(
-        "wrote docs/descriptors.md and docs/descriptors.json ({:.0} s)",
-        report.seconds
+        "wrote docs/{} and docs/{} ({:.0} s)",
+        round.md_file, round.report_file, report.seconds
     );
     Ok(())
 }

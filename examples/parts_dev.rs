@@ -5,10 +5,13 @@
 //! (sequences: no neighbour within 25 scans), and prints the median
 //! distance of the NDT histogram and of each part.
 //!
-//!     cargo run --release --example parts_dev -- [--seeds 1,2,3] [--scans N] [WEIGHTS...]
+//!     cargo run --release --example parts_dev -- [--seeds 1,2,3] [--scans N] [--only NAME] [WEIGHTS...]
 //!
-//! WEIGHTS: `ndt,height_range,slice,esf,ring` (e.g. `1,0,0.5,0,0`); without
-//! any, a fixed list. Never run on test seeds (301-305).
+//! WEIGHTS: `ndt,height_range,slice,esf,ring,clutter` (e.g.
+//! `1,0,5,5,5,0`); without any, a fixed list. The office and school floors
+//! (9 scans a kind, 3 a room, as in `examples/descriptors.rs`) score 1-NN
+//! with no neighbour from the scan's own room. Never run on test seeds
+//! (301-305, 311-315).
 
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
@@ -20,9 +23,20 @@ use rayon::prelude::*;
 
 type Res<T> = Result<T, Box<dyn std::error::Error>>;
 
+/// The NDT histogram's weight, then one per part kind.
+const WEIGHTS: usize = 1 + placecat::descriptor::parts::MAX_PARTS;
+
+/// Neighbours 1-NN may not use: along a route, the 25 nearest scans; on
+/// the floors, the scan's own room; else none.
+enum Exclusion {
+    None,
+    Window(usize),
+    Rooms(Vec<usize>),
+}
+
 struct Set {
     name: String,
-    sequence: bool,
+    exclusion: Exclusion,
     truth: Vec<String>,
     descriptors: Vec<Descriptor>,
     params: DescriptorParams,
@@ -57,9 +71,16 @@ fn simulate(name: &str, sp: SimParams, params: DescriptorParams) -> Res<Set> {
         })
         .collect::<Result<_, _>>()?;
     let (descriptors, truth) = described.into_iter().unzip();
+    let exclusion = match sp.scene {
+        SceneKind::Indoor => Exclusion::None,
+        SceneKind::OfficeFloor | SceneKind::School => {
+            Exclusion::Rooms((0..sim.len()).map(|i| sim.room(i)).collect())
+        }
+        _ => Exclusion::Window(25),
+    };
     Ok(Set {
         name: name.into(),
-        sequence: sp.scene != SceneKind::Indoor,
+        exclusion,
         truth,
         descriptors,
         params,
@@ -74,7 +95,7 @@ fn kinds(truth: &[String]) -> usize {
 }
 
 /// (stride, hk mean, 1-NN) for the weights.
-fn score(set: &Set, w: &[f32; 5]) -> Res<(f64, f64, f64)> {
+fn score(set: &Set, w: &[f32; WEIGHTS]) -> Res<(f64, f64, f64)> {
     let mut opts = DistanceOptions::from(&set.params);
     opts.ndt_weight = w[0];
     opts.part_weights.copy_from_slice(&w[1..]);
@@ -87,11 +108,15 @@ fn score(set: &Set, w: &[f32; 5]) -> Res<(f64, f64, f64)> {
         let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(seed))?;
         hk += evaluate(&set.truth, &tree.cut_k(k)?.labels)?.accuracy / 10.0;
     }
-    let gap = if set.sequence { 25 } else { 0 };
+    let allowed = |i: usize, j: usize| match &set.exclusion {
+        Exclusion::None => true,
+        Exclusion::Window(w) => j.abs_diff(i) > *w,
+        Exclusion::Rooms(r) => r[i] != r[j],
+    };
     let nn = (0..m.n)
         .filter(|&i| {
             (0..m.n)
-                .filter(|&j| j != i && j.abs_diff(i) > gap)
+                .filter(|&j| j != i && allowed(i, j))
                 .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)))
                 .is_some_and(|j| set.truth[i] == set.truth[j])
         })
@@ -102,8 +127,8 @@ fn score(set: &Set, w: &[f32; 5]) -> Res<(f64, f64, f64)> {
 
 fn median_distances(set: &Set) -> Res<Vec<f32>> {
     let mut out = Vec::new();
-    for c in 0..5 {
-        let mut w = [0f32; 5];
+    for c in 0..WEIGHTS {
+        let mut w = [0f32; WEIGHTS];
         w[c] = 1.0;
         let mut opts = DistanceOptions::from(&set.params);
         opts.ndt_weight = w[0];
@@ -124,7 +149,7 @@ fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut seeds = vec![1u64, 2, 3];
     let mut scans = 150usize;
-    let mut weights: Vec<[f32; 5]> = Vec::new();
+    let mut weights: Vec<[f32; WEIGHTS]> = Vec::new();
     let mut only: Option<String> = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
@@ -141,23 +166,24 @@ fn main() -> Res<()> {
             "--only" => only = it.next().cloned(),
             w => {
                 let v: Vec<f32> = w.split(',').map(str::parse).collect::<Result<_, _>>()?;
-                weights.push(v.try_into().map_err(|_| "five weights")?);
+                weights.push(v.try_into().map_err(|_| "six weights")?);
             }
         }
     }
-    if seeds.iter().any(|s| (301..=305).contains(s)) {
+    if seeds
+        .iter()
+        .any(|s| (301..=305).contains(s) || (311..=315).contains(s))
+    {
         return Err("test seeds are not for development (docs/seeds.md)".into());
     }
     if weights.is_empty() {
         weights = vec![
-            [1., 0., 0., 0., 0.],
-            [1., 15., 5., 10., 10.],
-            [1., 5., 1.2, 2.6, 5.],
-            [1., 0., 5., 0., 5.],
-            [0., 0., 10., 0., 10.],
-            [1., 15., 5., 0., 0.],
-            [0., 15., 5., 0., 10.],
-            [1., 15., 5., 0., 10.],
+            [1., 0., 0., 0., 0., 0.],
+            [1., 0., 5., 5., 5., 0.],
+            [1., 0., 0., 0., 0., 5.],
+            [1., 0., 5., 5., 5., 5.],
+            [1., 0., 5., 0., 5., 5.],
+            [0., 0., 0., 0., 0., 10.],
         ];
     }
     for &seed in &seeds {
@@ -173,6 +199,11 @@ fn main() -> Res<()> {
             buildings: b,
             lidar,
             ..SimParams::new(SceneKind::Indoor, seed)
+        };
+        let floor = |scene: SceneKind| SimParams {
+            scans: 9,
+            scans_per_room: 3,
+            ..SimParams::new(scene, seed)
         };
         let site = |scene: SceneKind, lidar: Option<LidarParams>| SimParams {
             scans,
@@ -209,6 +240,16 @@ fn main() -> Res<()> {
             site(SceneKind::Outdoor, None),
             DescriptorParams::outdoor(),
         )?;
+        add(
+            "office",
+            floor(SceneKind::OfficeFloor),
+            DescriptorParams::indoor(),
+        )?;
+        add(
+            "school",
+            floor(SceneKind::School),
+            DescriptorParams::indoor(),
+        )?;
         for set in &sets {
             let med = median_distances(set)?;
             let mut counts: Vec<(String, usize)> = Vec::new();
@@ -220,8 +261,8 @@ fn main() -> Res<()> {
             }
             println!("{counts:?}");
             println!(
-                "seed {seed} {:<16} n={} medians ndt {:.3} hr {:.3} slice {:.3} esf {:.3} ring {:.3}",
-                set.name, set.descriptors.len(), med[0], med[1], med[2], med[3], med[4]
+                "seed {seed} {:<16} n={} medians ndt {:.3} hr {:.3} slice {:.3} esf {:.3} ring {:.3} clutter {:.3}",
+                set.name, set.descriptors.len(), med[0], med[1], med[2], med[3], med[4], med[5]
             );
             for w in &weights {
                 let (s, h, n) = score(set, w)?;

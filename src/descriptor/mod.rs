@@ -1,9 +1,11 @@
 //! The NDT-histogram appearance descriptor (docs/design.md#descriptor):
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices; and optional extra [`parts`] beside it (issue
-//! 18): [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`].
+//! 18): [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
+//! [`clutter`].
 
 pub mod alignment;
+pub mod clutter;
 pub mod directions;
 pub mod esf;
 pub mod height_range;

@@ -7,15 +7,16 @@
 //! channel that holds one scalar feature (soft-binned, see [`soft_bin`])
 //! compares as the absolute difference of the feature over its range.
 //!
-//! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`].
+//! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
+//! [`clutter`].
 
-use super::{esf, height_range, ring, slice};
+use super::{clutter, esf, height_range, ring, slice};
 use crate::cloud::is_finite;
 use rustc_hash::FxHashSet;
 use serde::{Deserialize, Serialize};
 
 /// Most parts one descriptor may have (one of each kind).
-pub const MAX_PARTS: usize = 4;
+pub const MAX_PARTS: usize = 5;
 
 /// Which extra part.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -30,6 +31,9 @@ pub enum PartKind {
     Esf,
     /// Ring statistics of a polar height grid ([`ring`]).
     Ring,
+    /// Virtual horizontal scans at several heights above the floor, and
+    /// the height profile of what stands in the room ([`clutter`]).
+    Clutter,
 }
 
 impl PartKind {
@@ -39,6 +43,7 @@ impl PartKind {
         PartKind::Slice,
         PartKind::Esf,
         PartKind::Ring,
+        PartKind::Clutter,
     ];
 
     /// Position in [`PartKind::ALL`].
@@ -53,6 +58,7 @@ impl PartKind {
             PartKind::Slice => &slice::CHANNELS,
             PartKind::Esf => &esf::CHANNELS,
             PartKind::Ring => &ring::CHANNELS,
+            PartKind::Clutter => &clutter::CHANNELS,
         }
     }
 
@@ -73,6 +79,7 @@ impl PartKind {
             PartKind::Slice => slice::describe(points),
             PartKind::Esf => esf::describe(points),
             PartKind::Ring => ring::describe(points),
+            PartKind::Clutter => clutter::describe(points),
         };
         debug_assert_eq!(v.len(), self.len());
         v

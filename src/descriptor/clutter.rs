@@ -1,0 +1,253 @@
+//! Clutter at several heights above the floor: virtual horizontal laser
+//! scans, in the manner of Mozos, Stachniss and Burgard, "Supervised
+//! learning of places from range data using AdaBoost" (ICRA 2005), whose
+//! single-scan features (beam lengths, their relation to each other, the
+//! number of gaps between consecutive beams) tell rooms from corridors; and
+//! a height distribution after Röhling, Mack and Schulz (IROS 2015), here
+//! measured from the floor and of the room's contents only.
+//!
+//! Mozos et al. had one laser at one height. A 3-D scan holds a laser scan
+//! at every height, and the kinds of room that the free-space
+//! [`slice`](mod@super::slice) cannot tell apart (a private office and a
+//! restroom of the same size; a classroom and a library) differ in what
+//! stands inside them, and how high: desks and tables at 0.7 m, benches at
+//! 0.45 m, stall partitions, shelving and lockers to 2 m. So:
+//!
+//! - the floor is the 2nd percentile of height of the points within 8 m
+//!   (horizontally), the ceiling the 98th: heights are measured from the
+//!   floor, so the sensor's own height does not move them;
+//! - the *wall* of each of 180 azimuth sectors is its return of farthest
+//!   horizontal range (as in the slice); a point is *inside* the room when
+//!   it is nearer than 0.9 x its sector's wall - 0.2 m, above the floor
+//!   (0.1 m) and below the ceiling (0.2 m);
+//! - at each of four levels above the floor (0.3, 0.75, 1.2, 1.7 m; a band
+//!   of +-0.08 m) a virtual scan takes each sector's nearest return, as a
+//!   share of the sector's wall range (1 where the band has none).
+//!
+//! Channels: the height above the floor of the inside points thinned to one
+//! per 0.1 m voxel (0 to 2.5 m, 26 bins); the number of those voxels per
+//! m² of the free-space polygon (log10(1 + n / A), 0 to 2.5, 16 bins); then
+//! per level the histogram of the 180 shares (16 bins, 0 to 1) and the
+//! share of consecutive sectors whose shares differ by more than 0.25
+//! (Mozos et al.'s gaps; 0 to 0.5, 16 bins). Every channel is invariant to
+//! rotation about z (sectors are only counted, never ordered, but for the
+//! gaps, which are counted round the circle).
+
+use super::parts::{scalar_channel, sector_of, soft_bin, unit_sum, voxel_sample};
+use super::slice;
+use crate::cloud::is_finite;
+
+/// Levels of the virtual scans above the floor (m).
+const LEVELS: [f32; 4] = [0.3, 0.75, 1.2, 1.7];
+/// Half the height of a virtual scan's band (m).
+const BAND: f32 = 0.08;
+/// Bins of the height profile (0.1 m each, 0 to 2.5 m).
+const PROFILE_BINS: usize = 26;
+/// Top of the height profile (m above the floor).
+const PROFILE_TOP: f64 = 2.5;
+/// Bins of the scalar and share channels.
+const BINS: usize = 16;
+/// Horizontal reach of the floor and ceiling estimate (m).
+const NEAR: f32 = 8.0;
+
+/// Bins of each channel: height profile, clutter density, then per level
+/// the shares and the gaps.
+pub const CHANNELS: [usize; 2 + 2 * LEVELS.len()] = [
+    PROFILE_BINS,
+    BINS,
+    BINS,
+    BINS,
+    BINS,
+    BINS,
+    BINS,
+    BINS,
+    BINS,
+    BINS,
+];
+
+/// The floor and ceiling heights (relative to the sensor) of a scan: the
+/// 2nd and 98th percentiles of the heights of its points within 8 m
+/// horizontally; None with no such point.
+pub fn floor_and_ceiling(points: &[[f32; 3]]) -> Option<(f32, f32)> {
+    let mut z: Vec<f32> = points
+        .iter()
+        .filter(|p| is_finite(p) && p[0].hypot(p[1]) < NEAR)
+        .map(|p| p[2])
+        .collect();
+    if z.is_empty() {
+        return None;
+    }
+    let mut at = |q: f64| {
+        let k = ((z.len() - 1) as f64 * q).round() as usize;
+        *z.select_nth_unstable_by(k, f32::total_cmp).1
+    };
+    Some((at(0.02), at(0.98)))
+}
+
+/// Each sector's nearest return in the band at `level` above the floor,
+/// as a share of its wall range (1 where the band has none or the wall is
+/// unknown).
+pub fn level_shares(points: &[[f32; 3]], walls: &[f32], floor: f32, level: f32) -> Vec<f32> {
+    let sectors = walls.len();
+    let mut near = vec![f32::INFINITY; sectors];
+    for p in points.iter().filter(|p| is_finite(p)) {
+        if (p[2] - floor - level).abs() > BAND {
+            continue;
+        }
+        let r = p[0].hypot(p[1]);
+        if r < 0.3 {
+            continue;
+        }
+        let s = sector_of(p, sectors);
+        near[s] = near[s].min(r);
+    }
+    near.iter()
+        .zip(walls)
+        .map(|(&n, &w)| if w > 0.0 { (n / w).min(1.0) } else { 1.0 })
+        .collect()
+}
+
+/// The channels (see the module doc); a scan with no return beyond 0.3 m
+/// puts every channel's mass in bin 0.
+pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
+    let (Some(pts), Some((floor, ceiling))) =
+        (slice::sector_points(points), floor_and_ceiling(points))
+    else {
+        let mut v = Vec::new();
+        for &b in &CHANNELS {
+            let mut h = vec![0f32; b];
+            h[0] = 1.0;
+            v.extend(h);
+        }
+        return v;
+    };
+    let walls: Vec<f32> = pts.iter().map(|p| p[0].hypot(p[1]) as f32).collect();
+    let area = slice::features(&pts).area.max(1.0);
+    let mut profile = vec![0f32; PROFILE_BINS];
+    let mut inside = 0usize;
+    for p in voxel_sample(points, 0.1) {
+        let (r, h) = (p[0].hypot(p[1]), p[2] - floor);
+        let wall = walls[sector_of(&p, slice::SECTORS)];
+        if r < 0.3 || r > 0.9 * wall - 0.2 || h < 0.1 || p[2] > ceiling - 0.2 {
+            continue;
+        }
+        inside += 1;
+        soft_bin(
+            &mut profile,
+            h as f64 / PROFILE_TOP * (PROFILE_BINS - 1) as f64,
+            1.0,
+        );
+    }
+    unit_sum(&mut profile);
+    let mut v = profile;
+    v.extend(scalar_channel(
+        BINS,
+        (1.0 + inside as f64 / area).log10(),
+        0.0,
+        2.5,
+    ));
+    for level in LEVELS {
+        let shares = level_shares(points, &walls, floor, level);
+        let mut h = vec![0f32; BINS];
+        for &s in &shares {
+            soft_bin(&mut h, s as f64 * (BINS - 1) as f64, 1.0);
+        }
+        unit_sum(&mut h);
+        v.extend(h);
+        let n = shares.len();
+        let gaps = (0..n)
+            .filter(|&i| (shares[i] - shares[(i + 1) % n]).abs() > 0.25)
+            .count();
+        v.extend(scalar_channel(BINS, gaps as f64 / n as f64, 0.0, 0.5));
+    }
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Points on the walls, floor and ceiling of a w x d x 3 m box round
+    /// the origin (floor at -1.2), every 5 cm, and a table top (0.75 m
+    /// above the floor) of 1 x 1 m at x in [1, 2].
+    fn box_room(w: f32, d: f32, table: bool) -> Vec<[f32; 3]> {
+        let mut p = Vec::new();
+        let step = 0.05;
+        let n = |len: f32| (len / step) as usize;
+        let (x0, y0, z0) = (-w / 2.0, -d / 2.0, -1.2f32);
+        for i in 0..=n(w) {
+            for j in 0..=n(d) {
+                let (x, y) = (x0 + i as f32 * step, y0 + j as f32 * step);
+                p.push([x, y, z0]);
+                p.push([x, y, z0 + 3.0]);
+            }
+        }
+        for k in 0..=n(3.0) {
+            let z = z0 + k as f32 * step;
+            for i in 0..=n(w) {
+                let x = x0 + i as f32 * step;
+                p.push([x, y0, z]);
+                p.push([x, -y0, z]);
+            }
+            for j in 0..=n(d) {
+                let y = y0 + j as f32 * step;
+                p.push([x0, y, z]);
+                p.push([-x0, y, z]);
+            }
+        }
+        if table {
+            for i in 0..=n(1.0) {
+                for j in 0..=n(1.0) {
+                    p.push([1.0 + i as f32 * step, -0.5 + j as f32 * step, z0 + 0.75]);
+                }
+            }
+        }
+        p
+    }
+
+    #[test]
+    fn floor_and_ceiling_of_a_box_are_its_floor_and_ceiling() {
+        let (f, c) = floor_and_ceiling(&box_room(6.0, 4.0, false)).unwrap();
+        assert!((f + 1.2).abs() < 0.06, "floor {f}");
+        assert!((c - 1.8).abs() < 0.06, "ceiling {c}");
+    }
+
+    /// An empty room has nothing inside: every virtual scan reaches its
+    /// walls (shares 1, no gaps) and the density is 0; a table top at
+    /// 0.75 m puts the inside mass at 0.75 m and shortens the beams of the
+    /// sectors it spans at that level only.
+    #[test]
+    fn a_table_shows_at_its_height_and_nowhere_else() {
+        let empty = describe(&box_room(6.0, 4.0, false));
+        let density = &empty[PROFILE_BINS..PROFILE_BINS + BINS];
+        assert!(density[0] > 0.99, "{density:?}");
+        let pts = box_room(6.0, 4.0, true);
+        let (floor, _) = floor_and_ceiling(&pts).unwrap();
+        let walls: Vec<f32> = slice::sector_points(&pts)
+            .unwrap()
+            .iter()
+            .map(|p| p[0].hypot(p[1]) as f32)
+            .collect();
+        // The table spans atan(0.5 / 1) either side of +x: about 53 degrees,
+        // 26 of 180 sectors, at a share of 1 / 3 to 1 / 2.2 of the wall.
+        let at_table = level_shares(&pts, &walls, floor, 0.75);
+        let short = at_table.iter().filter(|&&s| s < 0.5).count();
+        assert!((24..=29).contains(&short), "{short} short sectors");
+        let low = level_shares(&pts, &walls, floor, 0.3);
+        assert!(low.iter().all(|&s| s > 0.95), "{low:?}");
+        let v = describe(&pts);
+        let profile = &v[..PROFILE_BINS];
+        let peak = (0..PROFILE_BINS)
+            .max_by(|&a, &b| profile[a].total_cmp(&profile[b]))
+            .unwrap();
+        assert!((7..=8).contains(&peak), "peak at bin {peak}: {profile:?}");
+        assert!(v[PROFILE_BINS] < 0.9, "density still 0");
+    }
+
+    #[test]
+    fn no_points_put_the_mass_in_bin_zero() {
+        let v = describe(&[[0.0, 0.0, 0.0]]);
+        assert_eq!(v.len(), CHANNELS.iter().sum::<usize>());
+        assert_eq!(v[0], 1.0);
+    }
+}
