@@ -206,7 +206,13 @@ fn descriptors_and_models_with_parts_round_trip() {
 
 /// The presets with extra parts; `free_space` has NDT weight 0, which
 /// takes its own early return in `Space::to_centre`.
-const PARTS_PRESETS: [&str; 4] = ["indoor_plus", "warehouse", "outdoor_plus", "free_space"];
+const PARTS_PRESETS: [&str; 5] = [
+    "indoor_plus",
+    "warehouse",
+    "outdoor_plus",
+    "free_space",
+    "indoor_clutter",
+];
 
 /// A few simulated warehouse scans along the aisles (every preset, the
 /// outdoor ones too, describes them), simulated once for the tests here.
