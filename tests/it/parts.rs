@@ -367,3 +367,63 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
         );
     }
 }
+
+/// Every part of every scan, bit for bit as before the ranges and
+/// azimuths were shared between parts (`descriptor::polar`): an FNV-1a
+/// digest of each part's values (f32 bits) on the real files and on
+/// simulated office and school scans, recorded by the code of commit
+/// 20288a1 in tests/fixtures/parts_digests.json. With
+/// PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
+#[test]
+fn parts_are_bit_identical_to_before_the_shared_polar_scan() {
+    use placecat::io::{read_scan, ReadLimits};
+    use placecat::sim::{SceneKind, SimParams, Simulation};
+    use std::collections::BTreeMap;
+    let fnv = |bits: &[u32]| {
+        let mut h = 0xcbf2_9ce4_8422_2325u64;
+        for b in bits.iter().flat_map(|w| w.to_le_bytes()) {
+            h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
+        }
+        format!("{h:016x}")
+    };
+    let params = every_part(1.0);
+    let mut scans: Vec<(String, Vec<[f32; 3]>)> = Vec::new();
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/real");
+    let groups = std::fs::read_to_string(format!("{root}/groups.csv")).unwrap();
+    for file in groups.lines().skip(1).filter_map(|l| l.split(',').next()) {
+        let bytes = std::fs::read(format!("{root}/{file}")).unwrap();
+        let cloud = read_scan(&bytes, file, &ReadLimits::default()).unwrap();
+        scans.push((file.to_string(), cloud.points));
+    }
+    for scene in [SceneKind::OfficeFloor, SceneKind::School] {
+        let mut p = SimParams::new(scene, 1);
+        p.scans = 1;
+        let sim = Simulation::new(&p).unwrap();
+        for i in 0..sim.len() {
+            scans.push((format!("{scene:?}/{i}"), sim.scan(i).points));
+        }
+    }
+    let mut got = BTreeMap::new();
+    for (name, points) in &scans {
+        let d = describe(points, &params).unwrap();
+        for part in &d.parts {
+            let bits: Vec<u32> = part.values.iter().map(|v| v.to_bits()).collect();
+            got.insert(format!("{:?}/{name}", part.kind), fnv(&bits));
+        }
+    }
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/fixtures/parts_digests.json"
+    );
+    if std::env::var_os("PLACECAT_WRITE_PARTS_DIGESTS").is_some() {
+        std::fs::write(path, serde_json::to_string_pretty(&got).unwrap()).unwrap();
+    }
+    let want: BTreeMap<String, String> =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    assert_eq!(want.len(), PartKind::ALL.len() * (18 + 10));
+    let differ: Vec<&String> = want
+        .keys()
+        .filter(|k| got.get(*k) != want.get(*k))
+        .collect();
+    assert!(differ.is_empty(), "parts changed: {differ:?}");
+}
