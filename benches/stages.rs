@@ -6,6 +6,7 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
+use placecat::descriptor::polar::PolarScan;
 use placecat::descriptor::{alignment, histogram, ndt_grid, shape, PartKind, PartValues};
 use placecat::io::write::{self, PlyEncoding};
 use placecat::io::{read_scan, ReadLimits};
@@ -205,6 +206,39 @@ fn describe_parts(c: &mut Criterion) {
                 b.iter(|| kind.describe(black_box(x)).len())
             });
         }
+        // indoor_clutter's four parts: each computing the points' ranges,
+        // azimuths and free-space polygon itself (as before
+        // descriptor::polar), and sharing them (as `describe` does now).
+        let kinds: Vec<PartKind> = DescriptorParams::indoor_clutter()
+            .parts
+            .iter()
+            .map(|p| p.kind)
+            .collect();
+        g.bench_with_input(
+            BenchmarkId::new("indoor_clutter_parts_separate", label),
+            &pts,
+            |b, x| {
+                b.iter(|| {
+                    kinds
+                        .iter()
+                        .map(|k| k.describe(black_box(x)).len())
+                        .sum::<usize>()
+                })
+            },
+        );
+        g.bench_with_input(
+            BenchmarkId::new("indoor_clutter_parts_shared", label),
+            &pts,
+            |b, x| {
+                b.iter(|| {
+                    let scan = PolarScan::new(black_box(x));
+                    kinds
+                        .iter()
+                        .map(|k| k.describe_scan(&scan).len())
+                        .sum::<usize>()
+                })
+            },
+        );
     }
     g.finish();
     // The distance: the paper's Delta matrix against the combined one of

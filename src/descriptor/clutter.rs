@@ -34,6 +34,7 @@
 //! gaps, which are counted round the circle).
 
 use super::parts::{scalar_channel, sector_of, soft_bin, unit_sum, voxel_sample};
+use super::polar::PolarScan;
 use super::slice;
 use crate::cloud::is_finite;
 
@@ -69,10 +70,16 @@ pub const CHANNELS: [usize; 2 + 2 * LEVELS.len()] = [
 /// 2nd and 98th percentiles of the heights of its points within 8 m
 /// horizontally; None with no such point.
 pub fn floor_and_ceiling(points: &[[f32; 3]]) -> Option<(f32, f32)> {
-    let mut z: Vec<f32> = points
+    floor_and_ceiling_of(&PolarScan::new(points))
+}
+
+fn floor_and_ceiling_of(scan: &PolarScan) -> Option<(f32, f32)> {
+    let mut z: Vec<f32> = scan
+        .points
         .iter()
-        .filter(|p| is_finite(p) && p[0].hypot(p[1]) < NEAR)
-        .map(|p| p[2])
+        .enumerate()
+        .filter(|(i, p)| is_finite(p) && scan.range(*i) < NEAR)
+        .map(|(_, p)| p[2])
         .collect();
     if z.is_empty() {
         return None;
@@ -88,17 +95,21 @@ pub fn floor_and_ceiling(points: &[[f32; 3]]) -> Option<(f32, f32)> {
 /// as a share of its wall range (1 where the band has none or the wall is
 /// unknown).
 pub fn level_shares(points: &[[f32; 3]], walls: &[f32], floor: f32, level: f32) -> Vec<f32> {
+    level_shares_of(&PolarScan::new(points), walls, floor, level)
+}
+
+fn level_shares_of(scan: &PolarScan, walls: &[f32], floor: f32, level: f32) -> Vec<f32> {
     let sectors = walls.len();
     let mut near = vec![f32::INFINITY; sectors];
-    for p in points.iter().filter(|p| is_finite(p)) {
-        if (p[2] - floor - level).abs() > BAND {
+    for (i, p) in scan.points.iter().enumerate() {
+        if !is_finite(p) || (p[2] - floor - level).abs() > BAND {
             continue;
         }
-        let r = p[0].hypot(p[1]);
+        let r = scan.range(i);
         if r < 0.3 {
             continue;
         }
-        let s = sector_of(p, sectors);
+        let s = scan.sector(i, sectors);
         near[s] = near[s].min(r);
     }
     near.iter()
@@ -110,9 +121,13 @@ pub fn level_shares(points: &[[f32; 3]], walls: &[f32], floor: f32, level: f32) 
 /// The channels (see the module doc); a scan with no return beyond 0.3 m
 /// puts every channel's mass in bin 0.
 pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
-    let (Some(pts), Some((floor, ceiling))) =
-        (slice::sector_points(points), floor_and_ceiling(points))
-    else {
+    describe_scan(&PolarScan::new(points))
+}
+
+/// [`describe`] of a scan whose ranges and azimuths are known.
+pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
+    let points = scan.points;
+    let (Some(pts), Some((floor, ceiling))) = (scan.polygon(), floor_and_ceiling_of(scan)) else {
         let mut v = Vec::new();
         for &b in &CHANNELS {
             let mut h = vec![0f32; b];
@@ -122,7 +137,7 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
         return v;
     };
     let walls: Vec<f32> = pts.iter().map(|p| p[0].hypot(p[1]) as f32).collect();
-    let area = slice::features(&pts).area.max(1.0);
+    let area = slice::features(pts).area.max(1.0);
     let mut profile = vec![0f32; PROFILE_BINS];
     let mut inside = 0usize;
     for p in voxel_sample(points, 0.1) {
@@ -147,7 +162,7 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
         2.5,
     ));
     for level in LEVELS {
-        let shares = level_shares(points, &walls, floor, level);
+        let shares = level_shares_of(scan, &walls, floor, level);
         let mut h = vec![0f32; BINS];
         for &s in &shares {
             soft_bin(&mut h, s as f64 * (BINS - 1) as f64, 1.0);

@@ -13,6 +13,7 @@ pub mod histogram;
 pub mod ndt_grid;
 pub mod params;
 pub mod parts;
+pub mod polar;
 pub mod ring;
 pub mod shape;
 pub mod slice;
@@ -163,13 +164,18 @@ pub fn describe(points: &[[f32; 3]], params: &DescriptorParams) -> Result<Descri
         cols: params.cols(),
         matrices,
         summary,
-        parts: params
-            .parts
-            .iter()
-            .map(|p| PartValues {
-                kind: p.kind,
-                values: p.kind.describe(points),
-            })
-            .collect(),
+        parts: if params.parts.is_empty() {
+            Vec::new()
+        } else {
+            let scan = polar::PolarScan::new(points);
+            params
+                .parts
+                .iter()
+                .map(|p| PartValues {
+                    kind: p.kind,
+                    values: p.kind.describe_scan(&scan),
+                })
+                .collect()
+        },
     })
 }

@@ -10,6 +10,7 @@
 //! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
 //! [`clutter`].
 
+use super::polar::PolarScan;
 use super::{clutter, esf, height_range, ring, slice};
 use crate::cloud::is_finite;
 use rustc_hash::FxHashSet;
@@ -74,12 +75,19 @@ impl PartKind {
 
     /// Compute the part from a scan's points (sensor frame, z up).
     pub fn describe(self, points: &[[f32; 3]]) -> Vec<f32> {
+        self.describe_scan(&PolarScan::new(points))
+    }
+
+    /// Compute the part from a scan whose ranges and azimuths are
+    /// computed once for all its parts.
+    pub fn describe_scan(self, scan: &PolarScan) -> Vec<f32> {
+        let points = scan.points;
         let v = match self {
             PartKind::HeightRange => height_range::describe(points),
-            PartKind::Slice => slice::describe(points),
+            PartKind::Slice => slice::describe_scan(scan),
             PartKind::Esf => esf::describe(points),
-            PartKind::Ring => ring::describe(points),
-            PartKind::Clutter => clutter::describe(points),
+            PartKind::Ring => ring::describe_scan(scan),
+            PartKind::Clutter => clutter::describe_scan(scan),
         };
         debug_assert_eq!(v.len(), self.len());
         v

@@ -13,7 +13,8 @@
 //! 45, 64 m: 11 rings), each 17 bins: empty, then the sector's largest
 //! height above the sensor from -3 m to 13 m in 1 m steps.
 
-use super::parts::{sector_of, soft_bin};
+use super::parts::soft_bin;
+use super::polar::PolarScan;
 use crate::cloud::is_finite;
 
 /// Ring edges (m).
@@ -32,14 +33,22 @@ pub const CHANNELS: [usize; EDGES.len() - 1] = [BINS; EDGES.len() - 1];
 
 /// One histogram per ring, each of unit sum.
 pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
+    describe_scan(&PolarScan::new(points))
+}
+
+/// [`describe`] of a scan whose ranges and azimuths are known.
+pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     let rings = EDGES.len() - 1;
     let mut top = vec![f32::NEG_INFINITY; rings * SECTORS];
-    for p in points.iter().filter(|p| is_finite(p)) {
-        let r = p[0].hypot(p[1]);
+    for (i, p) in scan.points.iter().enumerate() {
+        if !is_finite(p) {
+            continue;
+        }
+        let r = scan.range(i);
         let Some(ring) = EDGES.windows(2).position(|w| r >= w[0] && r < w[1]) else {
             continue;
         };
-        let s = sector_of(p, SECTORS);
+        let s = scan.sector(i, SECTORS);
         let t = &mut top[ring * SECTORS + s];
         *t = t.max(p[2]);
     }

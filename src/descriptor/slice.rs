@@ -21,7 +21,8 @@
 //! the polygon's second moments (0 to 1); and a histogram of the beam
 //! lengths (log scale, 0.3 to 100 m, 24 bins).
 
-use super::parts::{scalar_channel, sector_of, soft_bin, unit_sum};
+use super::parts::{scalar_channel, soft_bin, unit_sum};
+use super::polar::PolarScan;
 use crate::cloud::is_finite;
 
 /// Bins of each channel (see the module doc).
@@ -57,13 +58,21 @@ pub struct SliceFeatures {
 /// spans metres of wall, and its farthest return lies far beyond the
 /// wall point at its centre angle.
 pub fn sector_points(points: &[[f32; 3]]) -> Option<Vec<[f64; 2]>> {
+    sector_points_of(&PolarScan::new(points))
+}
+
+/// [`sector_points`] of a scan whose ranges and azimuths are known.
+pub fn sector_points_of(scan: &PolarScan) -> Option<Vec<[f64; 2]>> {
     let mut far: Vec<Option<(f32, [f32; 2])>> = vec![None; SECTORS];
-    for p in points.iter().filter(|p| is_finite(p)) {
-        let r = p[0].hypot(p[1]);
+    for (i, p) in scan.points.iter().enumerate() {
+        if !is_finite(p) {
+            continue;
+        }
+        let r = scan.range(i);
         if r < MIN_RANGE {
             continue;
         }
-        let s = sector_of(p, SECTORS);
+        let s = scan.sector(i, SECTORS);
         if far[s].is_none_or(|(best, _)| r > best) {
             far[s] = Some((r, [p[0], p[1]]));
         }
@@ -151,7 +160,12 @@ pub fn features(pts: &[[f64; 2]]) -> SliceFeatures {
 /// The channels (see the module doc); a scan with no return beyond 0.3 m
 /// puts every channel's mass in bin 0.
 pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
-    let Some(pts) = sector_points(points) else {
+    describe_scan(&PolarScan::new(points))
+}
+
+/// [`describe`] of a scan whose ranges and azimuths are known.
+pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
+    let Some(pts) = scan.polygon() else {
         let mut v = Vec::new();
         for &b in &CHANNELS {
             let mut h = vec![0f32; b];
@@ -160,7 +174,7 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
         }
         return v;
     };
-    let f = features(&pts);
+    let f = features(pts);
     let log = |x: f64| x.max(1e-6).log10();
     let mut v = Vec::with_capacity(CHANNELS.iter().sum());
     v.extend(scalar_channel(CHANNELS[0], log(f.area), 0.0, 4.0));
@@ -171,7 +185,7 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
     v.extend(scalar_channel(CHANNELS[5], f.elongation, 0.0, 1.0));
     let bins = CHANNELS[6];
     let mut beams = vec![0f32; bins];
-    for p in &pts {
+    for p in pts {
         soft_bin(
             &mut beams,
             (log(p[0].hypot(p[1])) + 0.5) / 2.5 * (bins - 1) as f64,

@@ -1,0 +1,58 @@
+//! A scan's points with their horizontal range and azimuth, computed once
+//! for every part that needs them ([`slice`](mod@super::slice),
+//! [`ring`](super::ring), [`clutter`](super::clutter)): each used to take
+//! its own `hypot` and `atan2` of every point, and the slice's polygon was
+//! made twice when the clutter part came with it. The values are the very
+//! ones each part computed, so descriptors stay bit for bit the same
+//! (tests/it/parts.rs checks it).
+
+use super::slice;
+use std::cell::OnceCell;
+
+/// Points, their ranges and azimuths, and the free-space polygon made on
+/// first use.
+pub struct PolarScan<'a> {
+    /// The points (sensor frame, z up).
+    pub points: &'a [[f32; 3]],
+    /// Horizontal range of each point (NaN for a non-finite one).
+    range: Vec<f32>,
+    /// atan2(y, x) + pi of each point, in [0, 2 pi].
+    angle: Vec<f32>,
+    /// [`slice::sector_points_of`], made once.
+    polygon: OnceCell<Option<Vec<[f64; 2]>>>,
+}
+
+impl<'a> PolarScan<'a> {
+    /// Ranges and azimuths of every point.
+    pub fn new(points: &'a [[f32; 3]]) -> Self {
+        PolarScan {
+            points,
+            range: points.iter().map(|p| p[0].hypot(p[1])).collect(),
+            angle: points
+                .iter()
+                .map(|p| p[1].atan2(p[0]) + std::f32::consts::PI)
+                .collect(),
+            polygon: OnceCell::new(),
+        }
+    }
+
+    /// Horizontal range of point `i`.
+    #[inline]
+    pub fn range(&self, i: usize) -> f32 {
+        self.range[i]
+    }
+
+    /// The azimuth sector (of `sectors` equal ones, counted from -pi) of
+    /// point `i`: [`sector_of`](super::parts::sector_of) of the point.
+    #[inline]
+    pub fn sector(&self, i: usize, sectors: usize) -> usize {
+        ((self.angle[i] / std::f32::consts::TAU * sectors as f32) as usize).min(sectors - 1)
+    }
+
+    /// The free-space polygon's vertices ([`slice::sector_points_of`]).
+    pub fn polygon(&self) -> Option<&[[f64; 2]]> {
+        self.polygon
+            .get_or_init(|| slice::sector_points_of(self))
+            .as_deref()
+    }
+}
