@@ -33,7 +33,7 @@
 //! rotation about z (sectors are only counted, never ordered, but for the
 //! gaps, which are counted round the circle).
 
-use super::parts::{scalar_channel, sector_of, soft_bin, unit_sum, voxel_sample};
+use super::parts::{empty_channels, scalar_channel, sector_of, soft_bin, unit_sum, voxel_sample};
 use super::polar::PolarScan;
 use super::slice;
 use crate::cloud::is_finite;
@@ -128,13 +128,7 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
 pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     let points = scan.points;
     let (Some(pts), Some((floor, ceiling))) = (scan.polygon(), floor_and_ceiling_of(scan)) else {
-        let mut v = Vec::new();
-        for &b in &CHANNELS {
-            let mut h = vec![0f32; b];
-            h[0] = 1.0;
-            v.extend(h);
-        }
-        return v;
+        return empty_channels(&CHANNELS);
     };
     let walls: Vec<f32> = pts.iter().map(|p| p[0].hypot(p[1]) as f32).collect();
     let area = slice::features(pts).area.max(1.0);

@@ -183,6 +183,18 @@ pub fn unit_sum(hist: &mut [f32]) {
     }
 }
 
+/// Channels of the given bins with every mass in bin 0 ("nothing
+/// there"): a part of a scan with no usable return.
+pub fn empty_channels(channels: &[usize]) -> Vec<f32> {
+    let mut v = Vec::with_capacity(channels.iter().sum());
+    for &b in channels {
+        let mut h = vec![0f32; b];
+        h[0] = 1.0;
+        v.extend(h);
+    }
+    v
+}
+
 /// The azimuth sector (of `sectors` equal ones, counted from -pi) that a
 /// point lies in.
 pub fn sector_of(p: &[f32; 3], sectors: usize) -> usize {

@@ -21,7 +21,7 @@
 //! the polygon's second moments (0 to 1); and a histogram of the beam
 //! lengths (log scale, 0.3 to 100 m, 24 bins).
 
-use super::parts::{scalar_channel, soft_bin, unit_sum};
+use super::parts::{empty_channels, scalar_channel, soft_bin, unit_sum};
 use super::polar::PolarScan;
 use crate::cloud::is_finite;
 
@@ -166,13 +166,7 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
 /// [`describe`] of a scan whose ranges and azimuths are known.
 pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     let Some(pts) = scan.polygon() else {
-        let mut v = Vec::new();
-        for &b in &CHANNELS {
-            let mut h = vec![0f32; b];
-            h[0] = 1.0;
-            v.extend(h);
-        }
-        return v;
+        return empty_channels(&CHANNELS);
     };
     let f = features(pts);
     let log = |x: f64| x.max(1e-6).log10();
