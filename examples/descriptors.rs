@@ -20,8 +20,9 @@
 //! leave-one-out with no neighbour from the scan's own room (routes: none
 //! within the stretch of 25 scans at the default 300 a route). The best
 //! new preset of a family is chosen on the development seeds (default
-//! sensor, stride k-means; of equals, the later in PRESETS) and reported on
-//! the test seeds, so the choice does not flatter it.
+//! sensor, stride k-means; of equals, round 1 kept the later in PRESETS,
+//! round 2 the better on dev hk-means++, then room-level 1-NN) and
+//! reported on the test seeds, so the choice does not flatter it.
 //!
 //! The report is computed into plain data ([`Report`]), written as JSON,
 //! and the markdown is rendered from that data.
@@ -668,7 +669,12 @@ fn render(round: &Round, r: &Report, notes: &str) -> Res<String> {
                 .join(", ")
         }
     )?;
-    writeln!(o, "**Method.** Families: indoor rooms of one building, of many buildings (`--buildings many`), of varied plans (`--buildings varied`: mirrored layouts, L-shaped rooms), an office floor (`--scene office-floor`: corridor, private office, meeting room, open plan, restroom; doors open into the corridor; written while the descriptors were being built, by another hand), school floors written after the descriptors were committed (`--scene school`: corridor with lockers, classroom, library, cafeteria, staff room), the warehouse and the outdoor site. No descriptor or preset was developed on the office or school floors. Indoor families: {KIND_SCANS} scans a kind, {ROOM_SCANS} per room at free spots anywhere in it ({} scans a set); routes: {ROUTE_SCANS} scans (a third of `placecat simulate`'s default). Sensors: each scene's own (128-beam OS0 indoors and in the warehouse at 1.0 to 1.4 m, 64-beam KITTI-like outdoors at 1.6 to 1.95 m); the school (the family written last) also with `--beams 16/32/64` and `--sensor-height 0.3/1.8`; rooms of many buildings and outdoors also with 16 beams; the office floor at 0.3 m; the warehouse with 32 beams; rooms of one building and of varied plans only with their own sensor. **Subsampled** (fewer scans, not every family with every sensor) so that the whole run stays near 15 minutes on a two-core machine shared by six builds; the sets are small, so a figure moves by 1/45 (indoor) or 1/100 (routes) per scan. Measures at the true number of kinds: deterministic (stride) k-means, hierarchical k-means++ (mean of clustering seeds 0-9), accuracy and ARI; 1-NN leave-one-out with no neighbour from the scan's room (routes: none within {ROUTE_WINDOW} scans at the default density of 300 a route, i.e. within {} of the {ROUTE_SCANS} scans here). The new preset reported for a family is the one with the best stride k-means on the dev seeds with the scene's own sensor (table in section 5).\n", 5 * KIND_SCANS, (ROUTE_WINDOW * ROUTE_SCANS).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS))?;
+    let developed = if round.number == 1 {
+        "No descriptor or preset was developed on the office or school floors."
+    } else {
+        "In this round the `clutter` part and `indoor_clutter` were developed on the development seeds of every family, the office and school floors included (docs/parts.md); the test seeds were run once, after."
+    };
+    writeln!(o, "**Method.** Families: indoor rooms of one building, of many buildings (`--buildings many`), of varied plans (`--buildings varied`: mirrored layouts, L-shaped rooms), an office floor (`--scene office-floor`: corridor, private office, meeting room, open plan, restroom; doors open into the corridor; written while the descriptors were being built, by another hand), school floors written after the descriptors were committed (`--scene school`: corridor with lockers, classroom, library, cafeteria, staff room), the warehouse and the outdoor site. {developed} Indoor families: {KIND_SCANS} scans a kind, {ROOM_SCANS} per room at free spots anywhere in it ({} scans a set); routes: {ROUTE_SCANS} scans (a third of `placecat simulate`'s default). Sensors: each scene's own (128-beam OS0 indoors and in the warehouse at 1.0 to 1.4 m, 64-beam KITTI-like outdoors at 1.6 to 1.95 m); the school (the family written last) also with `--beams 16/32/64` and `--sensor-height 0.3/1.8`; rooms of many buildings and outdoors also with 16 beams; the office floor at 0.3 m; the warehouse with 32 beams; rooms of one building and of varied plans only with their own sensor. **Subsampled** (fewer scans, not every family with every sensor) so that the whole run stays near 15 minutes on a two-core machine shared by six builds; the sets are small, so a figure moves by 1/45 (indoor) or 1/100 (routes) per scan. Measures at the true number of kinds: deterministic (stride) k-means, hierarchical k-means++ (mean of clustering seeds 0-9), accuracy and ARI; 1-NN leave-one-out with no neighbour from the scan's room (routes: none within {ROUTE_WINDOW} scans at the default density of 300 a route, i.e. within {} of the {ROUTE_SCANS} scans here). The new preset reported for a family is the one with the best stride k-means on the dev seeds with the scene's own sensor (table in section 5).\n", 5 * KIND_SCANS, (ROUTE_WINDOW * ROUTE_SCANS).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS))?;
     writeln!(o, "## 1. The best new preset against the paper's, per family (own sensor, mean of test seeds {tests})\n")?;
     render_best(&mut o, r)?;
     writeln!(o, "\n## 2. Every preset, every family and sensor (mean of test seeds {tests})\n\nEach cell: stride k-means / hk-means++ / room-level 1-NN, in %.\n")?;
@@ -900,7 +906,16 @@ fn read_json<T: serde::de::DeserializeOwned>(path: &std::path::Path) -> Res<T> {
 }
 
 /// What did not work in round 2, in words, written after its one test run.
-const NOTES_2: &str = "(to be written after the one test run of seeds 311-315)
+const NOTES_2: &str = "Written after the one test run of seeds 311-315 (presets of commit 4f279e5; the later sharing of polar coordinates between parts changes no value, tests/it/parts.rs checks it bit for bit). The new part is `clutter` (docs/parts.md), the new preset `indoor_clutter`; the other presets are those of round 1.
+
+- **The school, the family written after the first descriptors, still misses 85 % with stride k-means**: `indoor_clutter` 79.1 % (paper 71.6 %); over its six sensors 76.0 to 86.2 % (paper 69.8 to 77.3 %), only at 1.8 m above it. Its room-level 1-NN rose from 76.4 % to 94.2 % (85.3 to 96.4 % over the sensors), so the descriptor now holds the kinds; deterministic k-means does not find them as clusters (hk-means++ 68.7 %).
+- **Office floor at 0.3 m**: 84.9 % (paper 61.8 %), just under the target that the own sensor meets (94.2 %, paper 60.9 %).
+- **Warehouse halls: stride k-means stays at 64 to 69 % for every new preset** (chosen `indoor_plus` 66.6 %, paper 64.6 %; 32 beams 64.8 % against 61.2 %); the target is missed as in round 1, for the same reason (stride seeds in the large hall). hk-means++ reaches 92 to 98 % with the slice and ring presets (`free_space` at 32 beams 84.7 %). `indoor_clutter` is no hall preset: hk-means++ 66.4 % (dev 67.2 %; the racks are clutter in every hall). Room-level 1-NN of the chosen `indoor_plus`: 96.2 % against the paper's 99.4 %.
+- **Outdoor: the target (not worse than the paper's) is missed again, by more than in round 1.** The dev seeds chose `indoor_clutter` outright (95.3 % stride k-means against `indoor_plus` 94.8 %; no tie, so the new tie rule did not act); on the test seeds it gives 91.4 % against the paper's 95.6 % (hk-means++ 91.6 % against 82.5 %, room-level 1-NN 96.6 % against 97.4 %). No new preset reaches the paper's stride k-means with the site's own sensor (best `indoor_plus` 94.0 %); with 16 beams every new one beats it (90.8 to 95.4 % against 85.4 %). A half-point lead on six dev seeds chose a preset whose new part (what stands above the floor indoors) means nothing on a forest road.
+- **hk-means++ fell with the clutter part where the rooms are plain boxes**: rooms of one building `indoor_clutter` 86.2 % against `indoor_plus` 89.2 % (dev: 79.0 % against 85.1 %); the dev seeds chose `indoor_plus` there.
+- **Without the NDT histogram the clutter part is weaker** (dev, clutter alone at weight 10: office 80.0 %, school 69.6 % stride k-means, against 86.3 % and 85.5 % for `indoor_clutter`); it was not made a preset.
+- **Rounds are not comparable figure by figure**: `indoor_plus` on the office floor gives 79.6 % here and gave 74.2 % on seeds 301-305, the paper's `indoor` 60.9 % and 68.0 %. Compare presets within a round.
+- **Small sets**: 45 scans a set indoors (one scan moves a figure by 2.2 points), 100 along a route; means over five test seeds.
 ";
 
 fn notes_of(round: &Round) -> &'static str {
@@ -920,6 +935,7 @@ fn markdown(docs: &std::path::Path, round: &Round, report: &Report) -> Res<Strin
         let r2: Report = read_json(&second)?;
         writeln!(md, "\n## 7. Second round: the best new preset against the paper's (own sensor, mean of test seeds {})\n\nPresets chosen on the dev seeds {} (ties broken by dev hk-means++, then room-level 1-NN); every figure of that round, per sensor and seed, and what did not work, are in [descriptors-2.md](descriptors-2.md).\n", SECOND.seeds_text(SECOND.test_seeds), SECOND.seeds_text(SECOND.dev_seeds))?;
         render_best(&mut md, &r2)?;
+        writeln!(md, "\nWhat did not work in the second round:\n\n{NOTES_2}")?;
     }
     Ok(md)
 }
