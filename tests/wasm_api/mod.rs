@@ -173,9 +173,11 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(e.contains("attic"), "{e}");
     // Every preset has its note, and the presets with parts carry them.
     let notes: js_sys::Array = preset_notes().unwrap().unchecked_into();
-    assert_eq!(notes.length(), 8);
+    assert_eq!(notes.length(), 9);
     let warehouse = js_sys::JSON::stringify(&preset_params("warehouse").unwrap()).unwrap();
     assert!(String::from(warehouse).contains("\"slice\""));
+    let clutter = js_sys::JSON::stringify(&preset_params("indoor_clutter").unwrap()).unwrap();
+    assert!(String::from(clutter).contains("\"clutter\""));
     let bad = js_sys::JSON::parse(r#"{"voxel_size": -2}"#).unwrap();
     let e = message(validate_params(bad, None).err().unwrap());
     assert!(e.contains("voxel_size"), "{e}");
