@@ -9,6 +9,7 @@ import { existsSync, mkdirSync, readdirSync, writeFileSync } from 'node:fs';
 import { basename, join, resolve } from 'node:path';
 import { serve } from '../scripts/serve.mjs';
 import { makePly, compare } from './parsers.mjs';
+import { stageBreakdown } from './stages.mjs';
 
 const ROOT = resolve(new URL('..', import.meta.url).pathname);
 const PARENT = resolve(ROOT, '..');
@@ -87,9 +88,17 @@ await app.waitForFunction(() => Number(document.body.dataset.runs || 0) >= 1, nu
 const seconds = (Date.now() - t0) / 1000;
 clearInterval(sampler);
 const status = await app.textContent('#cluster-status');
-results.pool = { scans: files.length, seconds, status, peakMainHeapBytes: peakHeap, peakChromiumRssBytes: peakRss, baselineRssBytes: baseRss };
+const { entries, timeOrigin } = await app.evaluate(() => ({
+  timeOrigin: performance.timeOrigin,
+  entries: performance.getEntries().filter((e) => e.name.startsWith('placecat:'))
+    .map((e) => ({ name: e.name, startTime: e.startTime, duration: e.duration, detail: /** @type {any} */ (e).detail })),
+}));
+const breakdown = stageBreakdown(entries, timeOrigin);
+results.pool = { scans: files.length, seconds, status, peakMainHeapBytes: peakHeap, peakChromiumRssBytes: peakRss, baselineRssBytes: baseRss,
+  stages: breakdown.stages, workers: breakdown.workers };
 await app.screenshot({ path: join(ART, 'bench-pool.png') });
 console.log('pool', results.pool);
+console.log(breakdown.text);
 await browser.close();
 server.close();
 
@@ -112,6 +121,7 @@ for (const [name, r] of Object.entries(results.describe)) {
 const p = results.pool;
 lines.push('', '## The page: worker pool end to end', '',
   `${p.scans} simulated outdoor scans (~107k points each, binary PLY) given to the page's file input; time until described (both cores), Delta matrix, hierarchical tree and drawing are done: **${p.seconds.toFixed(1)} s** (${(p.scans / p.seconds).toFixed(1)} scans/s). ${p.status}.`, '',
+  'Where the time goes (the page\'s own stage measures, www/stages.js, and the pool\'s task clocks; seconds of wall time):', '', breakdown.text, '',
   `Peak main-thread JS heap ${(p.peakMainHeapBytes / 2 ** 20).toFixed(0)} MiB; peak resident memory of all Chromium processes ${(p.peakChromiumRssBytes / 2 ** 20).toFixed(0)} MiB (${(p.baselineRssBytes / 2 ** 20).toFixed(0)} MiB before loading).`);
 writeFileSync(join(ROOT, 'docs/benchmarks-web.md'), lines.join('\n') + '\n');
 writeFileSync(join(ROOT, 'docs/benchmarks-web.json'), JSON.stringify(results, null, 2) + '\n');

@@ -13,6 +13,7 @@ import { loadNames, saveNames, datasetId } from './store.js';
 import { beginSession, saveScan, lastSession } from './session.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
+import { stage, stageSince } from './stages.js';
 
 /** @typedef {import('./state.js').State} State */
 let state = S.initialState();
@@ -39,6 +40,7 @@ const addError = (name, message) => view.errors((state = S.withError(state, name
 
 /** @param {{file: File, name: string}[]} list */
 async function loadFiles(list) {
+  performance.mark('placecat:files');
   const { scans, truth, poses, other } = sortFiles(list);
   for (const f of truth) await loadTruth(f.file);
   for (const f of poses) await loadPoses(f.file, f.name);
@@ -104,6 +106,8 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   view.reset((state = S.beginRun(state, { datasetId, demo, inputs, anchors: loadNames(datasetId), params, withPosesFile })));
   const run = state.run;
   const current = () => run === state.run;
+  pool.clocks = [];
+  const began = performance.now();
   const total = inputs.length;
   // A bag counts its clouds read; any other input counts one.
   const unit = inputs.some((i) => i.bag) ? 'clouds' : 'scans';
@@ -119,17 +123,20 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
     onProgress: (n, all) => current() && view.progress(n, all, 'running', unit),
   });
   if (!current()) return;
+  stageSince('describe', began);
   if (suggestion) state = S.withSuggestion(state, suggestion);
   state = S.finishRun(state, results);
   view.progress(done, all, done < all ? 'cancelled' : 'done', unit);
   if (unit === 'clouds') showBags(inputs, bags);
   buildSet();
+  stageSince('run', began);
+  performance.mark('placecat:pool', { detail: pool.clocks });
   // Finished runs, for scripts that drive the page (and the e2e tests).
   document.body.dataset.runs = String(Number(document.body.dataset.runs || 0) + 1);
 }
 
 function buildSet() {
-  state = S.withSet(state, engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson)));
+  state = S.withSet(state, stage('load', () => engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson))));
   view.sweep('');
   cluster();
 }
@@ -143,9 +150,9 @@ function cluster() {
   try {
     if (m.method === 'hkmeans') {
       const next = S.nextCut(state);
-      state = S.withTree(state, engine.hkmeans(m.hkSeed));
+      state = S.withTree(state, stage('tree', () => engine.hkmeans(m.hkSeed)));
       if (!('auto' in next)) return cutTree(next);
-      state = S.withFirstCut(state, engine.suggestCategories());
+      state = S.withFirstCut(state, stage('choose', () => engine.suggestCategories()));
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);
@@ -163,8 +170,8 @@ function cutTree(how, by) {
   if (by) state = S.withCutBy(state, by);
   if (!state.tree) return;
   try {
-    const cut = 'k' in how ? engine.cutK(S.clampCategories(state, how.k)) : engine.cut(how.threshold);
-    state = S.withLabels(state, cut.labels, engine.medoids(cut.labels), cut);
+    const cut = stage('cut', () => 'k' in how ? engine.cutK(S.clampCategories(state, how.k)) : engine.cut(how.threshold));
+    state = S.withLabels(state, cut.labels, stage('medoids', () => engine.medoids(cut.labels)), cut);
   } catch (e) {
     return view.status(e.message);
   }
@@ -172,7 +179,7 @@ function cutTree(how, by) {
 }
 
 function render() {
-  view.render(state, preset(), state.scans.length === 2 && state.set ? engine.delta(0, 1) : undefined);
+  stage('draw', () => view.render(state, preset(), state.scans.length === 2 && state.set ? engine.delta(0, 1) : undefined));
   const labels = state.labels;
   if (!labels || labels.length !== state.scans.length) return;
   const truth = S.truthLabels(state);

@@ -3,8 +3,14 @@
 // uncaught error, out of memory) fails only its task and is replaced. A
 // task may send partial replies before its result (a bag's clouds, bag.js).
 
-/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void}} Job */
+/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number}} Job */
 /** @typedef {{worker: Worker, job: Job | null}} WorkerSlot */
+/**
+ * When a task was posted, started, had its file's bytes, ended (in its
+ * worker) and its result came back (wall-clock ms): the stage profile that
+ * `npm run bench` prints.
+ * @typedef {{worker: number, posted: number, start: number, read: number, end: number, received: number}} TaskClock
+ */
 
 export class WorkerPool {
   /** @param {URL} url the worker module @param {number} [size] */
@@ -16,6 +22,8 @@ export class WorkerPool {
     /** @type {WorkerSlot[]} */
     this.slots = [];
     this.nextId = 1;
+    /** @type {TaskClock[]} the tasks that ended (a run empties it as it begins) */
+    this.clocks = [];
     for (let i = 0; i < size; i++) this.slots.push(this.#spawn());
   }
 
@@ -28,6 +36,7 @@ export class WorkerPool {
       if (!job || e.data.id !== job.id) return;
       if ('partial' in e.data) return job.onPartial?.(e.data.partial);
       slot.job = null;
+      if (e.data.clock) this.clocks.push({ worker: this.slots.indexOf(slot), posted: job.posted ?? 0, ...e.data.clock, received: performance.timeOrigin + performance.now() });
       if (e.data.ok) job.resolve(e.data.result);
       else job.reject(new Error(e.data.error));
       this.#pump();
@@ -53,6 +62,7 @@ export class WorkerPool {
       if (slot.job || this.queue.length === 0) continue;
       const job = /** @type {Job} */ (this.queue.shift());
       slot.job = job;
+      job.posted = performance.timeOrigin + performance.now();
       slot.worker.postMessage({ id: job.id, task: job.task });
     }
   }

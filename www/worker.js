@@ -9,13 +9,20 @@ import { bagTopics, describeBag } from './bagreader.js';
 
 const ready = init().then(() => new Describer(wasm));
 
-/** @param {any} task @param {(p: any, transfer: Transferable[]) => void} partial */
-async function run(task, partial) {
+/** Wall-clock ms, comparable across the page and its workers (performance.now() is not). */
+const now = () => performance.timeOrigin + performance.now();
+
+/**
+ * @param {any} task @param {(p: any, transfer: Transferable[]) => void} partial
+ * @param {{start: number, read: number, end: number}} clock when the task came, its file's bytes were in, it ended
+ */
+async function run(task, partial, clock) {
   const describer = await ready;
   if (task.type === 'bag') return describeBag(wasm, task, partial);
   if (task.type === 'bagTopics') return bagTopics(wasm, task.file, task.name);
   if (task.type === 'describe') {
     const bytes = new Uint8Array(await task.file.arrayBuffer());
+    clock.read = now();
     if (task.byPreset) return describer.describeSuggesting(bytes, task.name, task.byPreset, task.previewPoints);
     return describer.describe(bytes, task.name, task.params, task.previewPoints);
   }
@@ -28,10 +35,12 @@ async function run(task, partial) {
 
 self.onmessage = async (e) => {
   const { id, task } = e.data;
+  const clock = { start: now(), read: 0, end: 0 };
   try {
-    const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }));
+    const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }), clock);
+    clock.end = now();
     const transfer = r && 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
-    self.postMessage({ id, ok: true, result: r }, { transfer });
+    self.postMessage({ id, ok: true, result: r, clock }, { transfer });
   } catch (err) {
     self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });
   }

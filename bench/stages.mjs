@@ -1,0 +1,45 @@
+// The page's stage breakdown from what it records (www/stages.js measures,
+// the pool's task clocks): where a run's wall time goes, for `npm run bench`.
+
+/**
+ * @param {{name: string, startTime: number, duration: number, detail?: any}[]} entries the page's
+ *   `placecat:` marks and measures (performance.getEntries) @param {number} timeOrigin the page's
+ * @returns {{stages: Record<string, number>, workers: {tasks: number, reading: number, describing: number, waiting: number}[], text: string}}
+ *   seconds; `waiting`: between a worker's tasks (its result to the main thread, the next task back)
+ */
+export function stageBreakdown(entries, timeOrigin) {
+  const sum = (name) => entries.filter((e) => e.name === `placecat:${name}`).reduce((s, e) => s + e.duration, 0) / 1000;
+  const files = entries.find((e) => e.name === 'placecat:files');
+  const run = entries.find((e) => e.name === 'placecat:run');
+  const clocks = /** @type {any[]} */ (entries.find((e) => e.name === 'placecat:pool')?.detail ?? []);
+  const firstPosted = Math.min(...clocks.map((c) => c.posted)) - timeOrigin;
+  const byStart = [...clocks].sort((a, b) => a.posted - b.posted);
+  const stages = {
+    'files to first task': files ? (firstPosted - files.startTime) / 1000 : NaN,
+    'first scan alone (preset)': byStart.length > 1 ? (byStart[1].posted - byStart[0].posted) / 1000 : NaN,
+    'describe (all scans)': sum('describe'),
+    'load descriptors': sum('load'),
+    'Delta matrix and tree': sum('tree'),
+    'choose categories': sum('choose'),
+    'cut and medoids': sum('cut') + sum('medoids'),
+    'draw': sum('draw'),
+    'run (from the first task)': run ? run.duration / 1000 : NaN,
+  };
+  const workers = [];
+  for (const w of new Set(clocks.map((c) => c.worker))) {
+    const mine = clocks.filter((c) => c.worker === w).sort((a, b) => a.start - b.start);
+    let waiting = 0;
+    for (let k = 1; k < mine.length; k++) waiting += Math.max(0, mine[k].start - mine[k - 1].end);
+    workers.push({
+      tasks: mine.length,
+      reading: mine.reduce((s, c) => s + (c.read ? c.read - c.start : 0), 0) / 1000,
+      describing: mine.reduce((s, c) => s + (c.end - (c.read || c.start)), 0) / 1000,
+      waiting: waiting / 1000,
+    });
+  }
+  const lines = Object.entries(stages).map(([k, v]) => `| ${k} | ${v.toFixed(2)} |`);
+  const wl = workers.map((w, i) => `| worker ${i} | ${w.tasks} | ${w.reading.toFixed(2)} | ${w.describing.toFixed(2)} | ${w.waiting.toFixed(2)} |`);
+  const text = ['| stage (main thread) | s |', '|---|---|', ...lines, '',
+    '| worker | tasks | reading the file (s) | describing (s) | waiting between tasks (s) |', '|---|---|---|---|---|', ...wl].join('\n');
+  return { stages, workers, text };
+}
