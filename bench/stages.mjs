@@ -32,14 +32,14 @@ export function stageBreakdown(entries, timeOrigin) {
     for (let k = 1; k < mine.length; k++) waiting += Math.max(0, mine[k].start - mine[k - 1].end);
     workers.push({
       tasks: mine.length,
-      reading: mine.reduce((s, c) => s + (c.read ? c.read - c.start : 0), 0) / 1000,
-      describing: mine.reduce((s, c) => s + (c.end - (c.read || c.start)), 0) / 1000,
+      reading: mine.reduce((s, c) => s + (c.read ? Math.max(0, c.read - c.start) : 0), 0) / 1000,
+      describing: mine.reduce((s, c) => s + (c.end - Math.max(c.read, c.start)), 0) / 1000,
       waiting: waiting / 1000,
     });
   }
   const lines = Object.entries(stages).map(([k, v]) => `| ${k} | ${v.toFixed(2)} |`);
   const wl = workers.map((w, i) => `| worker ${i} | ${w.tasks} | ${w.reading.toFixed(2)} | ${w.describing.toFixed(2)} | ${w.waiting.toFixed(2)} |`);
   const text = ['| stage (main thread) | s |', '|---|---|', ...lines, '',
-    '| worker | tasks | reading the file (s) | describing (s) | waiting between tasks (s) |', '|---|---|---|---|---|', ...wl].join('\n');
+    '| worker | tasks | waiting for the file\'s bytes (s) | describing (s) | waiting between tasks (s) |', '|---|---|---|---|---|', ...wl].join('\n');
   return { stages, workers, text };
 }

@@ -10,15 +10,20 @@ import { importNames } from './imports.js';
 import { View, $, download } from './view.js';
 import * as S from './state.js';
 import { loadNames, saveNames, datasetId } from './store.js';
-import { beginSession, saveScan, lastSession } from './session.js';
+import { beginSession, saveScans, lastSession } from './session.js';
+import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince } from './stages.js';
 
 /** @typedef {import('./state.js').State} State */
+/** How often a run shows its progress and saves its results (ms). */
+const TICK_MS = 200;
 let state = S.initialState();
 const engine = new Engine(wasm);
-const pool = new WorkerPool(new URL('./worker.js', import.meta.url));
+// Two tasks a worker: it reads the next file while it describes one. A bag
+// (or the listing of its topics) has a worker to itself.
+const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, { depth: 2, alone: (task) => task.type === 'bag' || task.type === 'bagTopics' });
 const view = new View({
   onThreshold: (t) => cutTree({ threshold: t }, 'threshold'),
   onName: (i, name) => {
@@ -114,14 +119,24 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   view.progress(0, total, 'running', unit);
   /** @type {Promise<unknown> | null} the session starts once the preset is known */
   let session = null;
+  /** @type {[number, number] | null} the progress to show at the next tick */
+  let shown = null;
+  // A few times a second: the progress and the results to save (batch.js).
+  /** @type {Batch<[number, import('./engine.js').ScanResult]>} */
+  const tick = new Batch(TICK_MS, (saves) => {
+    if (!current()) return;
+    if (shown) view.progress(shown[0], shown[1], 'running', unit);
+    if (saves.length) (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScans(datasetId, saves));
+  });
   const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
   const { results, done, total: all, suggestion, bags } = await describeInputs(pool, inputs, { params, byPreset }, {
     onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
     // A bag's jth cloud is stored at i + j / 1e7: after input i, before i + 1, in order.
-    onResult: (i, r, j) => current() && (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScan(datasetId, i + j / 1e7, r)),
+    onResult: (i, r, j) => tick.add([i + j / 1e7, r]),
     onError: (i, e) => current() && addError(inputs[i].name, e.message),
-    onProgress: (n, all) => current() && view.progress(n, all, 'running', unit),
+    onProgress: (n, all) => ((shown = [n, all]), tick.add()),
   });
+  tick.flush();
   if (!current()) return;
   stageSince('describe', began);
   if (suggestion) state = S.withSuggestion(state, suggestion);

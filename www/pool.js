@@ -1,10 +1,15 @@
 // A pool of module workers, one per core, each with its own wasm instance.
-// Tasks queue; each worker takes one at a time. A worker that dies (an
-// uncaught error, out of memory) fails only its task and is replaced. A
-// task may send partial replies before its result (a bag's clouds, bag.js).
+// Tasks queue; a worker holds up to `depth` of them and runs them in order
+// (worker.js starts reading the next task's file while it describes one):
+// it never waits for the main thread to hand it the next. A task that must
+// run `alone` (a bag: long, with partial replies) gets a worker to itself.
+// A worker that dies (an uncaught error, out of memory) is replaced; a task
+// it held alone fails, tasks it held together run again, each alone, so
+// that the one that kills a worker is the one that fails. A task may send
+// partial replies before its result (a bag's clouds, bag.js).
 
-/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number}} Job */
-/** @typedef {{worker: Worker, job: Job | null}} WorkerSlot */
+/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, alone: boolean}} Job */
+/** @typedef {{worker: Worker, jobs: Job[]}} WorkerSlot `jobs`: posted to the worker, not answered yet, oldest first */
 /**
  * When a task was posted, started, had its file's bytes, ended (in its
  * worker) and its result came back (wall-clock ms): the stage profile that
@@ -13,10 +18,16 @@
  */
 
 export class WorkerPool {
-  /** @param {URL} url the worker module @param {number} [size] */
-  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2)) {
+  /**
+   * @param {URL} url the worker module @param {number} [size]
+   * @param {{depth?: number, alone?: (task: any) => boolean}} [how] `depth`: tasks a worker holds at once;
+   *   `alone`: the tasks that get a worker to themselves
+   */
+  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false } = {}) {
     this.url = url;
     this.size = size;
+    this.depth = depth;
+    this.alone = alone;
     /** @type {Job[]} */
     this.queue = [];
     /** @type {WorkerSlot[]} */
@@ -30,12 +41,12 @@ export class WorkerPool {
   #spawn() {
     const worker = new Worker(this.url, { type: 'module' });
     /** @type {WorkerSlot} */
-    const slot = { worker, job: null };
+    const slot = { worker, jobs: [] };
     worker.onmessage = (e) => {
-      const job = slot.job;
-      if (!job || e.data.id !== job.id) return;
+      const job = slot.jobs.find((j) => j.id === e.data.id);
+      if (!job) return;
       if ('partial' in e.data) return job.onPartial?.(e.data.partial);
-      slot.job = null;
+      slot.jobs.splice(slot.jobs.indexOf(job), 1);
       if (e.data.clock) this.clocks.push({ worker: this.slots.indexOf(slot), posted: job.posted ?? 0, ...e.data.clock, received: performance.timeOrigin + performance.now() });
       if (e.data.ok) job.resolve(e.data.result);
       else job.reject(new Error(e.data.error));
@@ -44,12 +55,12 @@ export class WorkerPool {
     /** @param {Event & {message?: string}} [e] */
     const die = (e) => {
       e?.preventDefault?.();
-      const job = slot.job;
-      slot.job = null;
+      const jobs = slot.jobs.splice(0);
       worker.terminate();
       const i = this.slots.indexOf(slot);
       if (i >= 0) this.slots[i] = this.#spawn();
-      job?.reject(new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`));
+      if (jobs.length === 1) jobs[0].reject(new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`));
+      else this.queue.unshift(...jobs.map((j) => ({ ...j, alone: true })));
       this.#pump();
     };
     worker.onerror = die;
@@ -57,13 +68,18 @@ export class WorkerPool {
     return slot;
   }
 
+  /** Hand queued tasks to the workers: one to each idle worker first, then up to `depth` each. */
   #pump() {
-    for (const slot of this.slots) {
-      if (slot.job || this.queue.length === 0) continue;
-      const job = /** @type {Job} */ (this.queue.shift());
-      slot.job = job;
-      job.posted = performance.timeOrigin + performance.now();
-      slot.worker.postMessage({ id: job.id, task: job.task });
+    for (let held = 0; held < this.depth; held++) {
+      for (const slot of this.slots) {
+        const next = this.queue[0];
+        if (!next) return;
+        if (slot.jobs.length !== held || (held > 0 && (next.alone || slot.jobs.some((j) => j.alone)))) continue;
+        this.queue.shift();
+        slot.jobs.push(next);
+        next.posted = performance.timeOrigin + performance.now();
+        slot.worker.postMessage({ id: next.id, task: next.task });
+      }
     }
   }
 
@@ -73,7 +89,7 @@ export class WorkerPool {
    */
   run(task, onPartial) {
     return new Promise((resolve, reject) => {
-      this.queue.push({ id: this.nextId++, task, resolve, reject, onPartial });
+      this.queue.push({ id: this.nextId++, task, resolve, reject, onPartial, alone: this.alone(task) });
       this.#pump();
     });
   }
@@ -109,9 +125,9 @@ export class WorkerPool {
     const cancelled = new Error('cancelled');
     for (const job of this.queue.splice(0)) job.reject(cancelled);
     this.slots = this.slots.map((slot) => {
-      if (!slot.job) return slot;
+      if (!slot.jobs.length) return slot;
       slot.worker.terminate();
-      slot.job.reject(cancelled);
+      for (const job of slot.jobs) job.reject(cancelled);
       return this.#spawn();
     });
   }

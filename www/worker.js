@@ -1,5 +1,6 @@
 // One wasm instance per worker. Each task reads and describes one scan
-// (a File, so memory holds one file per worker), simulates one demo scan,
+// (a File, so memory holds the files of the tasks the worker holds, two
+// with the page's pool), simulates one demo scan,
 // or classifies one scan with a model; the engine does the wasm work. A
 // ROS bag is read in slices and its clouds posted one at a time as partial
 // replies (bagreader.js).
@@ -14,34 +15,46 @@ const now = () => performance.timeOrigin + performance.now();
 
 /**
  * @param {any} task @param {(p: any, transfer: Transferable[]) => void} partial
- * @param {{start: number, read: number, end: number}} clock when the task came, its file's bytes were in, it ended
+ * @param {{start: number, read: number, end: number}} clock when the task started, its file's bytes were in, it ended
+ * @param {Promise<ArrayBuffer> | null} file the task's file, being read
  */
-async function run(task, partial, clock) {
+async function run(task, partial, clock, file) {
   const describer = await ready;
   if (task.type === 'bag') return describeBag(wasm, task, partial);
   if (task.type === 'bagTopics') return bagTopics(wasm, task.file, task.name);
   if (task.type === 'describe') {
-    const bytes = new Uint8Array(await task.file.arrayBuffer());
+    const bytes = new Uint8Array(await /** @type {Promise<ArrayBuffer>} */ (file));
     clock.read = now();
     if (task.byPreset) return describer.describeSuggesting(bytes, task.name, task.byPreset, task.previewPoints);
     return describer.describe(bytes, task.name, task.params, task.previewPoints);
   }
   if (task.type === 'simulate') return describer.simulate(task, task.params, task.previewPoints);
   if (task.type === 'classify') {
-    return describer.classify(new Uint8Array(await task.file.arrayBuffer()), task.name, task.modelJson);
+    return describer.classify(new Uint8Array(await /** @type {Promise<ArrayBuffer>} */ (file)), task.name, task.modelJson);
   }
   throw new Error(`unknown task ${task.type}`);
 }
 
-self.onmessage = async (e) => {
+/** The tasks run one after another, in the order they came. */
+let queue = Promise.resolve();
+
+self.onmessage = (e) => {
   const { id, task } = e.data;
+  // The file is read now, while the task before is described.
+  const file = task.type === 'describe' || task.type === 'classify' ? /** @type {File} */ (task.file).arrayBuffer() : null;
+  file?.catch(() => {}); // its error is the task's, when the task awaits it
+  queue = queue.then(() => runAndReply(id, task, file));
+};
+
+/** @param {number} id @param {any} task @param {Promise<ArrayBuffer> | null} file */
+async function runAndReply(id, task, file) {
   const clock = { start: now(), read: 0, end: 0 };
   try {
-    const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }), clock);
+    const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }), clock, file);
     clock.end = now();
     const transfer = r && 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
     self.postMessage({ id, ok: true, result: r, clock }, { transfer });
   } catch (err) {
     self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });
   }
-};
+}
