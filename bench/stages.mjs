@@ -4,8 +4,9 @@
 /**
  * @param {{name: string, startTime: number, duration: number, detail?: any}[]} entries the page's
  *   `placecat:` marks and measures (performance.getEntries) @param {number} timeOrigin the page's
- * @returns {{stages: Record<string, number>, workers: {tasks: number, reading: number, describing: number, waiting: number}[], text: string}}
- *   seconds; `waiting`: between a worker's tasks (its result to the main thread, the next task back)
+ * @returns {{stages: Record<string, number>, workers: {tasks: number, reading: number, describing: number, replying: number, waiting: number}[], text: string}}
+ *   seconds; between a worker's tasks, `replying`: posting its result (and anything else before the next task
+ *   starts), `waiting`: for the next task to come
  */
 export function stageBreakdown(entries, timeOrigin) {
   const sum = (name) => entries.filter((e) => e.name === `placecat:${name}`).reduce((s, e) => s + e.duration, 0) / 1000;
@@ -28,18 +29,24 @@ export function stageBreakdown(entries, timeOrigin) {
   const workers = [];
   for (const w of new Set(clocks.map((c) => c.worker))) {
     const mine = clocks.filter((c) => c.worker === w).sort((a, b) => a.start - b.start);
-    let waiting = 0;
-    for (let k = 1; k < mine.length; k++) waiting += Math.max(0, mine[k].start - mine[k - 1].end);
+    let waiting = 0, replying = 0;
+    for (let k = 1; k < mine.length; k++) {
+      const gap = Math.max(0, mine[k].start - mine[k - 1].end);
+      const late = Math.min(gap, Math.max(0, mine[k].arrived - mine[k - 1].end));
+      waiting += late;
+      replying += gap - late;
+    }
     workers.push({
       tasks: mine.length,
       reading: mine.reduce((s, c) => s + (c.read ? Math.max(0, c.read - c.start) : 0), 0) / 1000,
       describing: mine.reduce((s, c) => s + (c.end - Math.max(c.read, c.start)), 0) / 1000,
       waiting: waiting / 1000,
+      replying: replying / 1000,
     });
   }
   const lines = Object.entries(stages).map(([k, v]) => `| ${k} | ${v.toFixed(2)} |`);
-  const wl = workers.map((w, i) => `| worker ${i} | ${w.tasks} | ${w.reading.toFixed(2)} | ${w.describing.toFixed(2)} | ${w.waiting.toFixed(2)} |`);
+  const wl = workers.map((w, i) => `| worker ${i} | ${w.tasks} | ${w.reading.toFixed(2)} | ${w.describing.toFixed(2)} | ${w.replying.toFixed(2)} | ${w.waiting.toFixed(2)} |`);
   const text = ['| stage (main thread) | s |', '|---|---|', ...lines, '',
-    '| worker | tasks | waiting for the file\'s bytes (s) | describing (s) | waiting between tasks (s) |', '|---|---|---|---|---|', ...wl].join('\n');
+    '| worker | tasks | waiting for the file\'s bytes (s) | describing (s) | replying (s) | waiting for the next task (s) |', '|---|---|---|---|---|---|', ...wl].join('\n');
   return { stages, workers, text };
 }

@@ -11,23 +11,25 @@
 /** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, alone: boolean}} Job */
 /** @typedef {{worker: Worker, jobs: Job[]}} WorkerSlot `jobs`: posted to the worker, not answered yet, oldest first */
 /**
- * When a task was posted, started, had its file's bytes, ended (in its
- * worker) and its result came back (wall-clock ms): the stage profile that
- * `npm run bench` prints.
- * @typedef {{worker: number, posted: number, start: number, read: number, end: number, received: number}} TaskClock
+ * When a task was posted, came to its worker, started, had its file's
+ * bytes, ended and its result came back (wall-clock ms): the stage profile
+ * that `npm run bench` prints.
+ * @typedef {{worker: number, posted: number, arrived: number, start: number, read: number, end: number, received: number}} TaskClock
  */
 
 export class WorkerPool {
   /**
    * @param {URL} url the worker module @param {number} [size]
-   * @param {{depth?: number, alone?: (task: any) => boolean}} [how] `depth`: tasks a worker holds at once;
-   *   `alone`: the tasks that get a worker to themselves
+   * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any) => Promise<{task: any, transfer: Transferable[]}> | null}} [how]
+   *   `depth`: tasks a worker holds at once; `alone`: the tasks that get a worker to themselves; `prepare`: work on the
+   *   main thread before a task is posted (none: null), e.g. reading its file, whose failure is the task's
    */
-  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false } = {}) {
+  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false, prepare = () => null } = {}) {
     this.url = url;
     this.size = size;
     this.depth = depth;
     this.alone = alone;
+    this.prepare = prepare;
     /** @type {Job[]} */
     this.queue = [];
     /** @type {WorkerSlot[]} */
@@ -77,10 +79,25 @@ export class WorkerPool {
         if (slot.jobs.length !== held || (held > 0 && (next.alone || slot.jobs.some((j) => j.alone)))) continue;
         this.queue.shift();
         slot.jobs.push(next);
-        next.posted = performance.timeOrigin + performance.now();
-        slot.worker.postMessage({ id: next.id, task: next.task });
+        this.#post(slot, next);
       }
     }
+  }
+
+  /** Post a job, once `prepare` (if it has work for the task) is done; a job dropped meanwhile is not posted. @param {WorkerSlot} slot @param {Job} job */
+  #post(slot, job) {
+    job.posted = performance.timeOrigin + performance.now();
+    const prepared = this.prepare(job.task);
+    if (!prepared) return slot.worker.postMessage({ id: job.id, task: job.task });
+    prepared.then(({ task, transfer }) => {
+      if (slot.jobs.includes(job)) slot.worker.postMessage({ id: job.id, task }, transfer);
+    }, (e) => {
+      const i = slot.jobs.indexOf(job);
+      if (i < 0) return;
+      slot.jobs.splice(i, 1);
+      job.reject(e);
+      this.#pump();
+    });
   }
 
   /**
@@ -127,7 +144,7 @@ export class WorkerPool {
     this.slots = this.slots.map((slot) => {
       if (!slot.jobs.length) return slot;
       slot.worker.terminate();
-      for (const job of slot.jobs) job.reject(cancelled);
+      for (const job of slot.jobs.splice(0)) job.reject(cancelled);
       return this.#spawn();
     });
   }

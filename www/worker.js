@@ -15,7 +15,7 @@ const now = () => performance.timeOrigin + performance.now();
 
 /**
  * @param {any} task @param {(p: any, transfer: Transferable[]) => void} partial
- * @param {{start: number, read: number, end: number}} clock when the task started, its file's bytes were in, it ended
+ * @param {{arrived: number, start: number, read: number, end: number}} clock when the task came, started, had its file's bytes, ended
  * @param {Promise<ArrayBuffer> | null} file the task's file, being read
  */
 async function run(task, partial, clock, file) {
@@ -40,15 +40,17 @@ let queue = Promise.resolve();
 
 self.onmessage = (e) => {
   const { id, task } = e.data;
-  // The file is read now, while the task before is described.
-  const file = task.type === 'describe' || task.type === 'classify' ? /** @type {File} */ (task.file).arrayBuffer() : null;
+  // The file's bytes, read by the page (pool.js) or read here now, while the task before is described.
+  const reads = task.type === 'describe' || task.type === 'classify';
+  const file = task.bytes ? Promise.resolve(/** @type {ArrayBuffer} */ (task.bytes)) : reads ? /** @type {File} */ (task.file).arrayBuffer() : null;
   file?.catch(() => {}); // its error is the task's, when the task awaits it
-  queue = queue.then(() => runAndReply(id, task, file));
+  const arrived = now();
+  queue = queue.then(() => runAndReply(id, task, file, arrived));
 };
 
-/** @param {number} id @param {any} task @param {Promise<ArrayBuffer> | null} file */
-async function runAndReply(id, task, file) {
-  const clock = { start: now(), read: 0, end: 0 };
+/** @param {number} id @param {any} task @param {Promise<ArrayBuffer> | null} file @param {number} arrived */
+async function runAndReply(id, task, file, arrived) {
+  const clock = { arrived, start: now(), read: 0, end: 0 };
   try {
     const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }), clock, file);
     clock.end = now();
