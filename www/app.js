@@ -15,10 +15,13 @@ import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince } from './stages.js';
+import { matrixInWorkers } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
 /** How often a run shows its progress and saves its results (ms). */
 const TICK_MS = 200;
+/** From this many scans the workers compute the Delta matrix (below, it takes milliseconds). */
+const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
 const engine = new Engine(wasm);
 // A scan's file is read here and its bytes moved to the worker (not
@@ -156,7 +159,11 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   state = S.finishRun(state, results);
   view.progress(done, all, done < all ? 'cancelled' : 'done', unit);
   if (unit === 'clouds') showBags(inputs, bags);
-  buildSet();
+  loadSet();
+  await matrixFromWorkers(current);
+  if (!current()) return;
+  view.sweep('');
+  cluster();
   stageSince('run', began);
   performance.mark('placecat:pool', { detail: pool.clocks });
   // Finished runs, for scripts that drive the page (and the e2e tests).
@@ -164,9 +171,31 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
 }
 
 function buildSet() {
-  state = S.withSet(state, stage('load', () => engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson))));
+  loadSet();
   view.sweep('');
   cluster();
+}
+
+function loadSet() {
+  state = S.withSet(state, stage('load', () => engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson))));
+}
+
+/**
+ * The set's Delta matrix from the workers (matrix.js), when the set keeps
+ * one and it takes long enough to matter; if they fail or the run is
+ * superseded, the set computes its own when needed.
+ * @param {() => boolean} current whether the run is still the page's
+ */
+async function matrixFromWorkers(current) {
+  if (!state.set?.usesMatrix || state.scans.length < WORKER_MATRIX_FROM) return;
+  const start = performance.now();
+  try {
+    const m = await matrixInWorkers(pool, /** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson));
+    if (current()) engine.setMatrix(m);
+  } catch {
+    // cancelled by a new run, or a worker died: the main thread computes it
+  }
+  stageSince('matrix', start);
 }
 
 function cluster() {

@@ -28,6 +28,7 @@ async function run(task, partial, clock, file) {
     if (task.byPreset) return describer.describeSuggesting(bytes, task.name, task.byPreset, task.previewPoints);
     return describer.describe(bytes, task.name, task.params, task.previewPoints);
   }
+  if (task.type === 'deltaRows') return describer.deltaRows(task.params, task.descriptorJsons, task.rows);
   if (task.type === 'simulate') return describer.simulate(task, task.params, task.previewPoints);
   if (task.type === 'classify') {
     return describer.classify(new Uint8Array(await /** @type {Promise<ArrayBuffer>} */ (file)), task.name, task.modelJson);
@@ -54,7 +55,7 @@ async function runAndReply(id, task, file, arrived) {
   try {
     const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }), clock, file);
     clock.end = now();
-    const transfer = r && 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
+    const transfer = r instanceof Float32Array ? [r.buffer] : r && 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
     self.postMessage({ id, ok: true, result: r, clock }, { transfer });
   } catch (err) {
     self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });
