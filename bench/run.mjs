@@ -9,6 +9,8 @@ import { existsSync, mkdirSync, readdirSync, writeFileSync } from 'node:fs';
 import { basename, join, resolve } from 'node:path';
 import { serve } from '../scripts/serve.mjs';
 import { makePly, compare } from './parsers.mjs';
+import { stageBreakdown } from './stages.mjs';
+import { chromiumCpu, cpuSince } from './cpu.mjs';
 
 const ROOT = resolve(new URL('..', import.meta.url).pathname);
 const PARENT = resolve(ROOT, '..');
@@ -57,19 +59,29 @@ const wasm = {
   kitti_000094: await page.evaluate(([u, n]) => window.benchDescribe(u, n), [rel(realFile), '000094.bin']),
   sim_100k_ply: await page.evaluate(([u, n]) => window.benchDescribe(u, n), [rel(simFile), 'sim.ply']),
 };
-const native = JSON.parse(execFileSync(join(ROOT, 'target/release/examples/time_describe'), [realFile, simFile]).toString());
+const native = JSON.parse(execFileSync(join(ROOT, 'target/release/examples/time_describe'), [realFile, simFile], { env: { ...process.env, RUNS: '100' } }).toString());
 results.describe = {
   kitti_000094: { wasm: wasm.kitti_000094, native: native[realFile] },
   sim_100k_ply: { wasm: wasm.sim_100k_ply, native: native[simFile] },
 };
 console.log('describe', results.describe);
+
+// 3. The page's stages alone on the same files: reading them (main
+// thread, as the page does) and describing (two workers, from memory).
+const files = readdirSync(join(ART, 'bench-1000')).filter((f) => f.endsWith('.ply')).sort().slice(0, POOL_SCANS).map((f) => join(ART, 'bench-1000', f));
+await page.setInputFiles('#files', files);
+results.alone = {
+  read: await page.evaluate(() => window.benchRead(8)),
+  describe1: await page.evaluate(() => window.benchDescribeAlone(1)),
+  describe2: await page.evaluate(() => window.benchDescribeAlone(2)),
+};
+console.log('alone', results.alone);
 await page.close();
 
-// 3. The page's worker pool on POOL_SCANS files, with memory sampled.
+// 4. The page's worker pool on POOL_SCANS files, with memory and CPU sampled.
 const app = await browser.newPage({ viewport: { width: 1400, height: 1000 } });
 await app.goto(`${base}/${checkout}/www/index.html`);
 await app.waitForFunction(() => document.body.dataset.ready === 'true');
-const files = readdirSync(join(ART, 'bench-1000')).filter((f) => f.endsWith('.ply')).sort().slice(0, POOL_SCANS).map((f) => join(ART, 'bench-1000', f));
 let peakHeap = 0, peakRss = 0;
 const rss = () => {
   try {
@@ -81,20 +93,30 @@ const sampler = setInterval(async () => {
   peakRss = Math.max(peakRss, rss());
   try { peakHeap = Math.max(peakHeap, await app.evaluate(() => performance.memory.usedJSHeapSize)); } catch {}
 }, 250);
+const cpu0 = chromiumCpu();
 const t0 = Date.now();
 await app.setInputFiles('#files', files);
 await app.waitForFunction(() => Number(document.body.dataset.runs || 0) >= 1, null, { timeout: 30 * 60 * 1000 });
 const seconds = (Date.now() - t0) / 1000;
+const cpu = cpuSince(cpu0);
 clearInterval(sampler);
 const status = await app.textContent('#cluster-status');
-results.pool = { scans: files.length, seconds, status, peakMainHeapBytes: peakHeap, peakChromiumRssBytes: peakRss, baselineRssBytes: baseRss };
+const { entries, timeOrigin } = await app.evaluate(() => ({
+  timeOrigin: performance.timeOrigin,
+  entries: performance.getEntries().filter((e) => e.name.startsWith('placecat:'))
+    .map((e) => ({ name: e.name, startTime: e.startTime, duration: e.duration, detail: /** @type {any} */ (e).detail })),
+}));
+const breakdown = stageBreakdown(entries, timeOrigin);
+results.pool = { scans: files.length, seconds, status, peakMainHeapBytes: peakHeap, peakChromiumRssBytes: peakRss, baselineRssBytes: baseRss,
+  stages: breakdown.stages, workers: breakdown.workers, cpu };
 await app.screenshot({ path: join(ART, 'bench-pool.png') });
 console.log('pool', results.pool);
+console.log(breakdown.text);
 await browser.close();
 server.close();
 
-// 4. The table.
-const pts = (ds) => ds.points / ds.seconds;
+// 5. The table.
+const pts = (ds) => ds.points / ds.fastest;
 const lines = [
   '# Web benchmarks', '',
   `Measured ${results.date} on this machine (${results.machine}); regenerate with \`npm run bench\`. Million points per second, median of 5 runs; ${N.toLocaleString()}-point PLY (float x, y, z, intensity), identical bytes for every parser.`, '',
@@ -105,13 +127,26 @@ for (const where of ['node', 'chromium']) for (const f of ['binary', 'ascii']) {
   const r = results[where][f];
   lines.push(`| ${where} | ${f} | ${fmt(r.placecat)} | ${fmt(r['three.js PLYLoader'])} | ${fmt(r['@loaders.gl/ply'])} | ${(r.placecat / r['three.js PLYLoader']).toFixed(1)}x | ${(r.placecat / r['@loaders.gl/ply']).toFixed(1)}x |`);
 }
-lines.push('', '## Read + describe, wasm in Chromium vs native (one core, outdoor preset)', '', '| file | points | native Mpts/s | wasm Mpts/s | wasm / native |', '|---|---|---|---|---|');
+lines.push('', '## Read + describe, wasm in Chromium vs native (one core, outdoor preset)', '',
+  'From memory, fastest of 100 runs natively and of 10 batches of 10 in Chromium: on a shared machine the median of 5 swung from 0.56 to 1.01 between files (issue 20); the fastest run is the least disturbed. Medians in docs/benchmarks-web.json.', '',
+  '| file | points | native Mpts/s | wasm Mpts/s | wasm / native |', '|---|---|---|---|---|');
 for (const [name, r] of Object.entries(results.describe)) {
   lines.push(`| ${name} | ${r.native.points} | ${fmt(pts(r.native))} | ${fmt(pts(r.wasm))} | ${(pts(r.wasm) / pts(r.native)).toFixed(2)} |`);
 }
+lines.push('', 'Both files are at the same share once each is timed at its fastest: the KITTI figure of 0.56 beside 1.01 for the simulated scan (this table before) came from medians of 5 runs while two other processes ran at 100 % on the 2 cores. What wasm loses is in the voxel grid (`ndt_grid::build`, hashing and running sums: 58 % of the wasm time on the KITTI scan in Node\'s CPU profile; the reader is 3 %, copying the bytes into wasm 2 %). Measured on the KITTI scan, fastest of 54 runs in Node, alternated 3 times (issue 20): a simd128 build 3.57-3.64 ms against 3.41-3.58 ms, binaryen\'s `wasm-opt -O3` 3.41-3.44 ms against 3.41-3.46 ms: neither is kept.');
 const p = results.pool;
+const a = results.alone;
+const mb = (x) => (x / 1e6).toFixed(0);
 lines.push('', '## The page: worker pool end to end', '',
   `${p.scans} simulated outdoor scans (~107k points each, binary PLY) given to the page's file input; time until described (both cores), Delta matrix, hierarchical tree and drawing are done: **${p.seconds.toFixed(1)} s** (${(p.scans / p.seconds).toFixed(1)} scans/s). ${p.status}.`, '',
+  'Where the time goes (the page\'s own stage measures, www/stages.js, and the pool\'s task clocks; seconds of wall time):', '', breakdown.text, '',
+  `CPU seconds used by Chromium during the run: **${p.cpu.total.toFixed(1)}** (${(p.cpu.total / 2).toFixed(1)} s on 2 cores, the run's floor on this machine however well the stages overlap):`, '',
+  '| thread | CPU s |', '|---|---|', ...p.cpu.kinds.map(([k, v]) => `| ${k} | ${v.toFixed(2)} |`), '',
+  'The stages alone, on the same files:', '',
+  `- reading them on the main thread as the page does (File.arrayBuffer, 8 at once), nothing else: ${a.read.seconds.toFixed(2)} s, ${mb(a.read.bytes / a.read.seconds)} MB/s (${mb(a.read.bytes)} MB);`,
+  `- describing (outdoor preset, from memory, the first file's bytes as often as there are files): one worker ${a.describe1.seconds.toFixed(2)} s (${fmt(a.describe1.points / a.describe1.seconds)} Mpts/s), two workers ${a.describe2.seconds.toFixed(2)} s (${fmt(a.describe2.points / a.describe2.seconds)} Mpts/s, ${(a.describe1.seconds / a.describe2.seconds).toFixed(2)}x);`,
+  `- so describing on two cores plus the tail after the last scan (Delta matrix, tree, choice of categories): ${(a.describe2.seconds + p.stages['Delta matrix (in the workers)'] + p.stages['tree (and the Delta matrix, if not given)'] + p.stages['choose categories']).toFixed(2)} s, reading overlapped; reading and describing one after the other: ${(a.read.seconds + a.describe2.seconds + p.stages['Delta matrix (in the workers)'] + p.stages['tree (and the Delta matrix, if not given)'] + p.stages['choose categories']).toFixed(2)} s.`, '',
+  `Target: 1,000 scans in at most 6 s on 2 cores: ${p.seconds <= 6 ? '**met**' : `**not met** (${p.seconds.toFixed(1)} s)`}. The floor is the CPU the run needs over the 2 cores (${(p.cpu.total / 2).toFixed(1)} s here), of which reading the files costs the browser's own threads (file and IPC threads, not placecat's code) ${(p.cpu.kinds.filter(([k]) => /^browser: (ThreadPool|Chrome_IOThread)/.test(k)).reduce((s, [, v]) => s + v, 0)).toFixed(1)} s; the tail after the last scan (the Delta matrix in the two workers, then the tree and the choice of categories on the main thread: ${(p.stages['Delta matrix (in the workers)'] + p.stages['tree (and the Delta matrix, if not given)'] + p.stages['choose categories']).toFixed(2)} s) comes on top of whatever part of the rest does not overlap. Two workers describing alone ran ${(a.describe1.seconds / a.describe2.seconds).toFixed(2)}x one worker here: below 2x, the cores were not all free.`, '',
   `Peak main-thread JS heap ${(p.peakMainHeapBytes / 2 ** 20).toFixed(0)} MiB; peak resident memory of all Chromium processes ${(p.peakChromiumRssBytes / 2 ** 20).toFixed(0)} MiB (${(p.baselineRssBytes / 2 ** 20).toFixed(0)} MiB before loading).`);
 writeFileSync(join(ROOT, 'docs/benchmarks-web.md'), lines.join('\n') + '\n');
 writeFileSync(join(ROOT, 'docs/benchmarks-web.json'), JSON.stringify(results, null, 2) + '\n');

@@ -1,5 +1,5 @@
 //! Times read + describe (outdoor preset) of each file natively, one core,
-//! median of 5 runs after a warm-up; prints JSON. Used by bench/run.mjs to
+//! median and fastest of RUNS runs (default 5) after a warm-up; prints JSON. Used by bench/run.mjs to
 //! compare with the wasm build on the same files.
 use placecat::io::{read_scan, ReadLimits};
 use placecat::{describe, DescriptorParams};
@@ -7,12 +7,16 @@ use std::time::Instant;
 
 fn main() {
     let p = DescriptorParams::outdoor();
+    let runs: usize = std::env::var("RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(5);
     let mut out = serde_json::Map::new();
     for path in std::env::args().skip(1) {
         let bytes = std::fs::read(&path).unwrap();
         let mut times = Vec::new();
         let mut points = 0;
-        for r in 0..6 {
+        for r in 0..=runs {
             let t = Instant::now();
             let c = read_scan(&bytes, &path, &ReadLimits::default()).unwrap();
             let d = describe(&c.points, &p).unwrap();
@@ -26,7 +30,7 @@ fn main() {
         times.sort_by(f64::total_cmp);
         out.insert(
             path,
-            serde_json::json!({"points": points, "seconds": times[times.len() / 2]}),
+            serde_json::json!({"points": points, "seconds": times[times.len() / 2], "fastest": times[0]}),
         );
     }
     println!("{}", serde_json::Value::Object(out));

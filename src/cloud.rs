@@ -72,7 +72,16 @@ pub fn is_finite(p: &[f32; 3]) -> bool {
 /// At most `max` finite points, evenly strided through the scan (for maps
 /// and thumbnails), as interleaved x, y, z.
 pub fn decimate(points: &[[f32; 3]], max: usize) -> Vec<f32> {
-    let finite = points.iter().filter(|p| is_finite(p)).count();
+    if max == 0 {
+        return Vec::new();
+    }
+    decimate_counted(points, points.iter().filter(|p| is_finite(p)).count(), max)
+}
+
+/// [`decimate`] when the number of finite points is known (a descriptor's
+/// summary counts them): one pass over the points instead of two (the
+/// counting pass was 4 % of describing a KITTI scan in wasm).
+pub fn decimate_counted(points: &[[f32; 3]], finite: usize, max: usize) -> Vec<f32> {
     if max == 0 || finite == 0 {
         return Vec::new();
     }
@@ -83,4 +92,29 @@ pub fn decimate(points: &[[f32; 3]], max: usize) -> Vec<f32> {
         .step_by(step)
         .flat_map(|p| p.iter().copied())
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimate_strides_through_the_finite_points_and_the_counted_form_agrees() {
+        let nan = f32::NAN;
+        let points: Vec<[f32; 3]> = (0..10)
+            .map(|i| {
+                if i % 3 == 1 {
+                    [nan, 0.0, 0.0]
+                } else {
+                    [i as f32, 0.0, 1.0]
+                }
+            })
+            .collect();
+        // Finite: 0, 2, 3, 5, 6, 8, 9 (7 points); at most 3 -> every 3rd.
+        let d = decimate(&points, 3);
+        assert_eq!(d, vec![0.0, 0.0, 1.0, 5.0, 0.0, 1.0, 9.0, 0.0, 1.0]);
+        assert_eq!(decimate_counted(&points, 7, 3), d);
+        assert!(decimate(&points, 0).is_empty());
+        assert!(decimate_counted(&points, 0, 3).is_empty());
+    }
 }

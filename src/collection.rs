@@ -211,6 +211,52 @@ impl Collection {
         Ok(self.space()?.delta(i, j))
     }
 
+    /// Delta from each scan of `rows` to every later one (j > i), row after
+    /// row: a share of the Delta matrix, for another thread to compute (the
+    /// page splits the matrix between its workers; [`Collection::set_matrix`]
+    /// takes the whole).
+    pub fn delta_rows(&mut self, rows: &[usize]) -> Result<Vec<f32>> {
+        let n = self.len();
+        if let Some(bad) = rows.iter().find(|&&i| i >= n) {
+            return invalid(format!("row {bad} out of range (set has {n})"));
+        }
+        let space = self.space()?;
+        Ok(rows
+            .iter()
+            .flat_map(|&i| (i + 1..n).map(move |j| space.delta(i, j)))
+            .collect())
+    }
+
+    /// Use `matrix` as this set's Delta matrix instead of computing it (one
+    /// assembled from [`Collection::delta_rows`] of an equal set). Refused
+    /// unless it is n x n, zero on the diagonal and symmetric bit for bit.
+    pub fn set_matrix(&mut self, matrix: DistanceMatrix) -> Result<()> {
+        let n = self.len();
+        if !self.uses_matrix() {
+            return invalid(format!(
+                "{n} scans are more than the {MATRIX_LIMIT} a Delta matrix is kept for"
+            ));
+        }
+        if matrix.n != n || matrix.data.len() != n * n {
+            return Err(Error::Mismatch(format!(
+                "a Delta matrix of {} values for {n} scans",
+                matrix.data.len()
+            )));
+        }
+        for i in 0..n {
+            if matrix.get(i, i) != 0.0 {
+                return invalid(format!("Delta matrix: ({i}, {i}) is not 0"));
+            }
+            if let Some(j) =
+                (0..i).find(|&j| matrix.get(i, j).to_bits() != matrix.get(j, i).to_bits())
+            {
+                return invalid(format!("Delta matrix: ({i}, {j}) differs from ({j}, {i})"));
+            }
+        }
+        self.cache()?.matrix = Some(matrix);
+        Ok(())
+    }
+
     /// k-means (needs no matrix).
     pub fn kmeans(&mut self, params: &KMeansParams) -> Result<KMeansResult> {
         self.check_nonempty()?;

@@ -12,6 +12,7 @@ use crate::cluster::hkmeans::HkMeansParams;
 use crate::cluster::{self, DbscanParams, KMeansParams, KMedoidsParams, Seeding};
 use crate::collection::{category_names, merge_params, Collection, MATRIX_LIMIT};
 use crate::descriptor::{Descriptor, DescriptorParams};
+use crate::distance::DistanceMatrix;
 use crate::io::{self, write, ReadLimits};
 use crate::model::LabelledModel;
 use crate::{sim, Error};

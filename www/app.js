@@ -10,14 +10,36 @@ import { importNames } from './imports.js';
 import { View, $, download } from './view.js';
 import * as S from './state.js';
 import { loadNames, saveNames, datasetId } from './store.js';
-import { beginSession, saveScan, lastSession } from './session.js';
+import { beginSession, saveScans, lastSession } from './session.js';
+import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
+import { stage, stageSince } from './stages.js';
+import { matrixInWorkers } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
+/** How often a run shows its progress and saves its results (ms). */
+const TICK_MS = 200;
+/** From this many scans the workers compute the Delta matrix (below, it takes milliseconds). */
+const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
 const engine = new Engine(wasm);
-const pool = new WorkerPool(new URL('./worker.js', import.meta.url));
+// A scan's file is read here and its bytes moved to the worker (not
+// copied): a worker reads a File only between two descriptions (the bytes
+// come in through its own event loop), so reading there made the workers
+// wait; the main thread is idle meanwhile. Each worker holds four tasks,
+// so the next files are read while it describes: with six reads at once a
+// file took ~30 ms to come (median, 1,000 scans of 1.3 MB, a loaded
+// machine), three descriptions' time. Memory: four files a worker. A bag
+// (or the listing of its topics) has a worker to itself and reads the bag
+// itself, in slices.
+const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
+  depth: 4,
+  alone: (task) => task.type === 'bag' || task.type === 'bagTopics',
+  prepare: (task) => task.type === 'describe' && task.file
+    ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
+    : null,
+});
 const view = new View({
   onThreshold: (t) => cutTree({ threshold: t }, 'threshold'),
   onName: (i, name) => {
@@ -39,6 +61,7 @@ const addError = (name, message) => view.errors((state = S.withError(state, name
 
 /** @param {{file: File, name: string}[]} list */
 async function loadFiles(list) {
+  performance.mark('placecat:files');
   const { scans, truth, poses, other } = sortFiles(list);
   for (const f of truth) await loadTruth(f.file);
   for (const f of poses) await loadPoses(f.file, f.name);
@@ -104,34 +127,75 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   view.reset((state = S.beginRun(state, { datasetId, demo, inputs, anchors: loadNames(datasetId), params, withPosesFile })));
   const run = state.run;
   const current = () => run === state.run;
+  pool.clocks = [];
+  const began = performance.now();
   const total = inputs.length;
   // A bag counts its clouds read; any other input counts one.
   const unit = inputs.some((i) => i.bag) ? 'clouds' : 'scans';
   view.progress(0, total, 'running', unit);
   /** @type {Promise<unknown> | null} the session starts once the preset is known */
   let session = null;
+  /** @type {[number, number] | null} the progress to show at the next tick */
+  let shown = null;
+  // A few times a second: the progress and the results to save (batch.js).
+  /** @type {Batch<[number, import('./engine.js').ScanResult]>} */
+  const tick = new Batch(TICK_MS, (saves) => {
+    if (!current()) return;
+    if (shown) view.progress(shown[0], shown[1], 'running', unit);
+    if (saves.length) (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScans(datasetId, saves));
+  });
   const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
   const { results, done, total: all, suggestion, bags } = await describeInputs(pool, inputs, { params, byPreset }, {
     onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
     // A bag's jth cloud is stored at i + j / 1e7: after input i, before i + 1, in order.
-    onResult: (i, r, j) => current() && (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScan(datasetId, i + j / 1e7, r)),
+    onResult: (i, r, j) => tick.add([i + j / 1e7, r]),
     onError: (i, e) => current() && addError(inputs[i].name, e.message),
-    onProgress: (n, all) => current() && view.progress(n, all, 'running', unit),
+    onProgress: (n, all) => ((shown = [n, all]), tick.add()),
   });
+  tick.flush();
   if (!current()) return;
+  stageSince('describe', began);
   if (suggestion) state = S.withSuggestion(state, suggestion);
   state = S.finishRun(state, results);
   view.progress(done, all, done < all ? 'cancelled' : 'done', unit);
   if (unit === 'clouds') showBags(inputs, bags);
-  buildSet();
+  loadSet();
+  await matrixFromWorkers(current);
+  if (!current()) return;
+  view.sweep('');
+  cluster();
+  stageSince('run', began);
+  performance.mark('placecat:pool', { detail: pool.clocks });
   // Finished runs, for scripts that drive the page (and the e2e tests).
   document.body.dataset.runs = String(Number(document.body.dataset.runs || 0) + 1);
 }
 
 function buildSet() {
-  state = S.withSet(state, engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson)));
+  loadSet();
   view.sweep('');
   cluster();
+}
+
+function loadSet() {
+  state = S.withSet(state, stage('load', () => engine.load(/** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson))));
+}
+
+/**
+ * The set's Delta matrix from the workers (matrix.js), when the set keeps
+ * one and it takes long enough to matter; if they fail or the run is
+ * superseded, the set computes its own when needed.
+ * @param {() => boolean} current whether the run is still the page's
+ */
+async function matrixFromWorkers(current) {
+  if (!state.set?.usesMatrix || state.scans.length < WORKER_MATRIX_FROM) return;
+  const start = performance.now();
+  try {
+    const m = await matrixInWorkers(pool, /** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson));
+    if (current()) engine.setMatrix(m);
+  } catch {
+    // cancelled by a new run, or a worker died: the main thread computes it
+  }
+  stageSince('matrix', start);
 }
 
 function cluster() {
@@ -143,9 +207,9 @@ function cluster() {
   try {
     if (m.method === 'hkmeans') {
       const next = S.nextCut(state);
-      state = S.withTree(state, engine.hkmeans(m.hkSeed));
+      state = S.withTree(state, stage('tree', () => engine.hkmeans(m.hkSeed)));
       if (!('auto' in next)) return cutTree(next);
-      state = S.withFirstCut(state, engine.suggestCategories());
+      state = S.withFirstCut(state, stage('choose', () => engine.suggestCategories()));
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);
@@ -163,8 +227,8 @@ function cutTree(how, by) {
   if (by) state = S.withCutBy(state, by);
   if (!state.tree) return;
   try {
-    const cut = 'k' in how ? engine.cutK(S.clampCategories(state, how.k)) : engine.cut(how.threshold);
-    state = S.withLabels(state, cut.labels, engine.medoids(cut.labels), cut);
+    const cut = stage('cut', () => 'k' in how ? engine.cutK(S.clampCategories(state, how.k)) : engine.cut(how.threshold));
+    state = S.withLabels(state, cut.labels, stage('medoids', () => engine.medoids(cut.labels)), cut);
   } catch (e) {
     return view.status(e.message);
   }
@@ -172,7 +236,7 @@ function cutTree(how, by) {
 }
 
 function render() {
-  view.render(state, preset(), state.scans.length === 2 && state.set ? engine.delta(0, 1) : undefined);
+  stage('draw', () => view.render(state, preset(), state.scans.length === 2 && state.set ? engine.delta(0, 1) : undefined));
   const labels = state.labels;
   if (!labels || labels.length !== state.scans.length) return;
   const truth = S.truthLabels(state);

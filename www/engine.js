@@ -154,6 +154,15 @@ export class Engine {
     return { k: choice.k, why: choiceReason(choice) };
   }
 
+  /**
+   * Use a Delta matrix computed elsewhere (matrix.js, from the workers) for
+   * the set; a bad one throws and the set computes its own when needed.
+   * @param {Float32Array} matrix n x n, row-major
+   */
+  setMatrix(matrix) {
+    this.set.get('scans').setDeltaMatrix(matrix);
+  }
+
   /** Delta between two scans of the set. @param {number} i @param {number} j @returns {number} */
   delta(i, j) {
     return this.set.get('scans').delta(i, j);
@@ -233,6 +242,18 @@ export class Describer {
     return scoped(this.wasm.describeScan(bytes, name, params, undefined, previewPoints), (scan) => {
       const preview = scan.preview();
       return { name: scan.name, format: scan.format, descriptorJson: scan.descriptorJson(), summary: scan.summary(), preview, site: siteSubsample(preview) };
+    });
+  }
+
+  /**
+   * Delta from each scan of `rows` to every later one, row after row, in a
+   * set of these descriptors: this worker's share of the Delta matrix.
+   * @param {Params} params @param {string[]} descriptorJsons @param {number[]} rows @returns {Float32Array}
+   */
+  deltaRows(params, descriptorJsons, rows) {
+    return scoped(new this.wasm.DescriptorSet(params, undefined), (set) => {
+      for (const json of descriptorJsons) set.addJson(json);
+      return set.deltaRows(Uint32Array.from(rows));
     });
   }
 

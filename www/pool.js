@@ -1,33 +1,55 @@
 // A pool of module workers, one per core, each with its own wasm instance.
-// Tasks queue; each worker takes one at a time. A worker that dies (an
-// uncaught error, out of memory) fails only its task and is replaced. A
-// task may send partial replies before its result (a bag's clouds, bag.js).
+// Tasks queue; a worker holds up to `depth` of them and runs them in order
+// (worker.js starts reading the next task's file while it describes one):
+// it never waits for the main thread to hand it the next. A task that must
+// run `alone` (a bag: long, with partial replies) gets a worker to itself.
+// A worker that dies (an uncaught error, out of memory) is replaced; a task
+// it held alone fails, tasks it held together run again, each alone, so
+// that the one that kills a worker is the one that fails. A task may send
+// partial replies before its result (a bag's clouds, bag.js).
 
-/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void}} Job */
-/** @typedef {{worker: Worker, job: Job | null}} WorkerSlot */
+/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, alone: boolean}} Job */
+/** @typedef {{worker: Worker, jobs: Job[]}} WorkerSlot `jobs`: posted to the worker, not answered yet, oldest first */
+/**
+ * When a task was posted, came to its worker, started, had its file's
+ * bytes, ended and its result came back (wall-clock ms): the stage profile
+ * that `npm run bench` prints.
+ * @typedef {{worker: number, posted: number, arrived: number, start: number, read: number, end: number, received: number}} TaskClock
+ */
 
 export class WorkerPool {
-  /** @param {URL} url the worker module @param {number} [size] */
-  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2)) {
+  /**
+   * @param {URL} url the worker module @param {number} [size]
+   * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any) => Promise<{task: any, transfer: Transferable[]}> | null}} [how]
+   *   `depth`: tasks a worker holds at once; `alone`: the tasks that get a worker to themselves; `prepare`: work on the
+   *   main thread before a task is posted (none: null), e.g. reading its file, whose failure is the task's
+   */
+  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false, prepare = () => null } = {}) {
     this.url = url;
     this.size = size;
+    this.depth = depth;
+    this.alone = alone;
+    this.prepare = prepare;
     /** @type {Job[]} */
     this.queue = [];
     /** @type {WorkerSlot[]} */
     this.slots = [];
     this.nextId = 1;
+    /** @type {TaskClock[]} the tasks that ended (a run empties it as it begins) */
+    this.clocks = [];
     for (let i = 0; i < size; i++) this.slots.push(this.#spawn());
   }
 
   #spawn() {
     const worker = new Worker(this.url, { type: 'module' });
     /** @type {WorkerSlot} */
-    const slot = { worker, job: null };
+    const slot = { worker, jobs: [] };
     worker.onmessage = (e) => {
-      const job = slot.job;
-      if (!job || e.data.id !== job.id) return;
+      const job = slot.jobs.find((j) => j.id === e.data.id);
+      if (!job) return;
       if ('partial' in e.data) return job.onPartial?.(e.data.partial);
-      slot.job = null;
+      slot.jobs.splice(slot.jobs.indexOf(job), 1);
+      if (e.data.clock) this.clocks.push({ worker: this.slots.indexOf(slot), posted: job.posted ?? 0, ...e.data.clock, received: performance.timeOrigin + performance.now() });
       if (e.data.ok) job.resolve(e.data.result);
       else job.reject(new Error(e.data.error));
       this.#pump();
@@ -35,12 +57,12 @@ export class WorkerPool {
     /** @param {Event & {message?: string}} [e] */
     const die = (e) => {
       e?.preventDefault?.();
-      const job = slot.job;
-      slot.job = null;
+      const jobs = slot.jobs.splice(0);
       worker.terminate();
       const i = this.slots.indexOf(slot);
       if (i >= 0) this.slots[i] = this.#spawn();
-      job?.reject(new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`));
+      if (jobs.length === 1) jobs[0].reject(new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`));
+      else this.queue.unshift(...jobs.map((j) => ({ ...j, alone: true })));
       this.#pump();
     };
     worker.onerror = die;
@@ -48,13 +70,34 @@ export class WorkerPool {
     return slot;
   }
 
+  /** Hand queued tasks to the workers: one to each idle worker first, then up to `depth` each. */
   #pump() {
-    for (const slot of this.slots) {
-      if (slot.job || this.queue.length === 0) continue;
-      const job = /** @type {Job} */ (this.queue.shift());
-      slot.job = job;
-      slot.worker.postMessage({ id: job.id, task: job.task });
+    for (let held = 0; held < this.depth; held++) {
+      for (const slot of this.slots) {
+        const next = this.queue[0];
+        if (!next) return;
+        if (slot.jobs.length !== held || (held > 0 && (next.alone || slot.jobs.some((j) => j.alone)))) continue;
+        this.queue.shift();
+        slot.jobs.push(next);
+        this.#post(slot, next);
+      }
     }
+  }
+
+  /** Post a job, once `prepare` (if it has work for the task) is done; a job dropped meanwhile is not posted. @param {WorkerSlot} slot @param {Job} job */
+  #post(slot, job) {
+    job.posted = performance.timeOrigin + performance.now();
+    const prepared = this.prepare(job.task);
+    if (!prepared) return slot.worker.postMessage({ id: job.id, task: job.task });
+    prepared.then(({ task, transfer }) => {
+      if (slot.jobs.includes(job)) slot.worker.postMessage({ id: job.id, task }, transfer);
+    }, (e) => {
+      const i = slot.jobs.indexOf(job);
+      if (i < 0) return;
+      slot.jobs.splice(i, 1);
+      job.reject(e);
+      this.#pump();
+    });
   }
 
   /**
@@ -63,7 +106,7 @@ export class WorkerPool {
    */
   run(task, onPartial) {
     return new Promise((resolve, reject) => {
-      this.queue.push({ id: this.nextId++, task, resolve, reject, onPartial });
+      this.queue.push({ id: this.nextId++, task, resolve, reject, onPartial, alone: this.alone(task) });
       this.#pump();
     });
   }
@@ -99,9 +142,9 @@ export class WorkerPool {
     const cancelled = new Error('cancelled');
     for (const job of this.queue.splice(0)) job.reject(cancelled);
     this.slots = this.slots.map((slot) => {
-      if (!slot.job) return slot;
+      if (!slot.jobs.length) return slot;
       slot.worker.terminate();
-      slot.job.reject(cancelled);
+      for (const job of slot.jobs.splice(0)) job.reject(cancelled);
       return this.#spawn();
     });
   }

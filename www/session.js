@@ -46,10 +46,14 @@ export function beginSession(datasetId, info) {
   }).catch(() => {});
 }
 
-/** Store one described scan. */
-export function saveScan(datasetId, index, scan) {
-  const { name, descriptorJson, summary, preview, site, pose, label, format } = scan;
-  return tx([STORE], 'readwrite', (t) => t.objectStore(STORE).put({ datasetId, index, name, descriptorJson, summary, preview, site, pose, label, format })).catch(() => {});
+/** Store described scans, [index, scan] each, in one transaction. */
+export function saveScans(datasetId, scans) {
+  return tx([STORE], 'readwrite', (t) => {
+    const store = t.objectStore(STORE);
+    for (const [index, { name, descriptorJson, summary, preview, site, pose, label, format }] of scans) {
+      store.put({ datasetId, index, name, descriptorJson, summary, preview, site, pose, label, format });
+    }
+  }).catch(() => {});
 }
 
 /** The last session's data set and its scans in order, or null. */

@@ -66,10 +66,11 @@ impl DescribedScan {
         preview_points: Option<usize>,
     ) -> WasmResult<DescribedScan> {
         let descriptor = crate::describe(points, params).map_err(|e| e.in_file(name))?;
+        let finite = descriptor.summary.points;
         Ok(DescribedScan {
             name: name.to_string(),
             format,
-            preview: crate::cloud::decimate(points, preview_points.unwrap_or(4000)),
+            preview: crate::cloud::decimate_counted(points, finite, preview_points.unwrap_or(4000)),
             descriptor,
             pose: None,
         })

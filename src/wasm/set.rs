@@ -51,6 +51,21 @@ impl DescriptorSet {
     pub fn delta_matrix(&mut self) -> WasmResult<js_sys::Float32Array> {
         Ok(js_sys::Float32Array::from(&self.set.matrix()?.data[..]))
     }
+    /// Delta from each scan of `rows` to every later one (j > i), row after
+    /// row: a share of the matrix for another worker to compute.
+    #[wasm_bindgen(js_name = deltaRows)]
+    pub fn delta_rows(&mut self, rows: &[u32]) -> WasmResult<js_sys::Float32Array> {
+        let rows: Vec<usize> = rows.iter().map(|&i| i as usize).collect();
+        Ok(js_sys::Float32Array::from(&self.set.delta_rows(&rows)?[..]))
+    }
+    /// Use this n x n Delta matrix (row-major, e.g. assembled from
+    /// `deltaRows` of an equal set) instead of computing it; refused unless
+    /// n x n, zero on the diagonal and symmetric.
+    #[wasm_bindgen(js_name = setDeltaMatrix)]
+    pub fn set_delta_matrix(&mut self, data: Vec<f32>) -> WasmResult<()> {
+        let n = self.set.len();
+        Ok(self.set.set_matrix(DistanceMatrix { n, data })?)
+    }
     /// k-means: `seeding` is `random`, `stride` or `plusplus`. Returns
     /// `{labels, seeds, iterations, converged, cost}`.
     #[wasm_bindgen(unchecked_return_type = "KMeansResult")]

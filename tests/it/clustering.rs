@@ -402,3 +402,64 @@ fn a_one_scan_category_is_near_to_its_own_scan_and_far_from_others() {
         }
     }
 }
+
+#[test]
+fn a_matrix_assembled_from_shares_of_rows_is_the_matrix_and_a_bad_one_is_refused() {
+    use placecat::Collection;
+    let (ds, _) = sim_set(4, 12);
+    let named = || {
+        ds.iter()
+            .enumerate()
+            .map(|(i, d)| (format!("s{i}"), d.clone()))
+    };
+    let params = DescriptorParams::indoor();
+    let mut whole = Collection::from_parts(params.clone(), named()).unwrap();
+    let want = whole.matrix().unwrap().clone();
+    let n = ds.len();
+    // Two shares, as the page's two workers compute them (odd and even rows).
+    let mut data = vec![0f32; n * n];
+    for share in 0..2 {
+        let rows: Vec<usize> = (share..n).step_by(2).collect();
+        let values = Collection::from_parts(params.clone(), named())
+            .unwrap()
+            .delta_rows(&rows)
+            .unwrap();
+        let mut at = values.iter();
+        for &i in &rows {
+            for j in i + 1..n {
+                let v = *at.next().unwrap();
+                data[i * n + j] = v;
+                data[j * n + i] = v;
+            }
+        }
+        assert!(at.next().is_none(), "one value per pair");
+    }
+    assert_eq!(data, want.data, "bit for bit");
+    let mut given = Collection::from_parts(params.clone(), named()).unwrap();
+    given
+        .set_matrix(DistanceMatrix {
+            n,
+            data: data.clone(),
+        })
+        .unwrap();
+    assert_eq!(
+        given.hkmeans(&HkMeansParams::new(3)).unwrap(),
+        whole.hkmeans(&HkMeansParams::new(3)).unwrap()
+    );
+
+    let mut other = Collection::from_parts(params, named()).unwrap();
+    let mut lopsided = data.clone();
+    lopsided[1] += 0.5; // (0, 1) no longer equals (1, 0)
+    let e = other
+        .set_matrix(DistanceMatrix { n, data: lopsided })
+        .unwrap_err();
+    assert!(e.to_string().contains("(1, 0) differs from (0, 1)"), "{e}");
+    let e = other
+        .set_matrix(DistanceMatrix {
+            n,
+            data: data[1..].to_vec(),
+        })
+        .unwrap_err();
+    assert!(e.to_string().contains("values for"), "{e}");
+    assert!(other.delta_rows(&[n]).is_err());
+}

@@ -191,3 +191,28 @@ test('the first cut: the rule chooses the number of categories from the data and
   assert.ok(e.delta(0, 39) > 0 && Math.abs(e.delta(0, 39) - e.delta(39, 0)) < 1e-6);
   e.dispose();
 });
+
+test('the Delta matrix from the workers\' shares (matrix.js) is the set\'s own, and the engine takes it; a wrong one is refused', async () => {
+  const { matrixInWorkers } = await import('../../www/matrix.js');
+  const jsons = scans.map((s) => s.descriptorJson);
+  const d = new Describer(wasm);
+  // Three stand-in workers, each computing its share as worker.js does.
+  const pool = /** @type {any} */ ({ size: 3, run: async (t) => d.deltaRows(t.params, t.descriptorJsons, t.rows) });
+  const m = await matrixInWorkers(pool, params, jsons);
+  d.dispose();
+  const own = scoped(new wasm.DescriptorSet(params, undefined), (set) => {
+    for (const j of jsons) set.addJson(j);
+    return set.deltaMatrix();
+  });
+  assert.deepEqual(m, own);
+  const e = new Engine(wasm);
+  e.load(params, jsons);
+  assert.throws(() => e.setMatrix(m.subarray(1)), /values for 40 scans/);
+  const lopsided = m.slice();
+  lopsided[1] += 0.5;
+  assert.throws(() => e.setMatrix(lopsided), /differs/);
+  e.setMatrix(m);
+  assert.equal(e.delta(3, 17), m[3 * 40 + 17]);
+  assert.ok(e.hkmeans(0).nodes.length > 40);
+  e.dispose();
+});

@@ -1,0 +1,53 @@
+// The page's stage breakdown from what it records (www/stages.js measures,
+// the pool's task clocks): where a run's wall time goes, for `npm run bench`.
+
+/**
+ * @param {{name: string, startTime: number, duration: number, detail?: any}[]} entries the page's
+ *   `placecat:` marks and measures (performance.getEntries) @param {number} timeOrigin the page's
+ * @returns {{stages: Record<string, number>, workers: {tasks: number, reading: number, describing: number, replying: number, waiting: number}[], text: string}}
+ *   seconds; between a worker's tasks, `replying`: posting its result (and anything else before the next task
+ *   starts), `waiting`: for the next task to come
+ */
+export function stageBreakdown(entries, timeOrigin) {
+  const sum = (name) => entries.filter((e) => e.name === `placecat:${name}`).reduce((s, e) => s + e.duration, 0) / 1000;
+  const files = entries.find((e) => e.name === 'placecat:files');
+  const run = entries.find((e) => e.name === 'placecat:run');
+  const clocks = /** @type {any[]} */ (entries.find((e) => e.name === 'placecat:pool')?.detail ?? []);
+  const firstPosted = Math.min(...clocks.map((c) => c.posted)) - timeOrigin;
+  const byStart = [...clocks].sort((a, b) => a.posted - b.posted);
+  const stages = {
+    'files to first task': files ? (firstPosted - files.startTime) / 1000 : NaN,
+    'first scan alone (preset)': byStart.length > 1 ? (byStart[1].posted - byStart[0].posted) / 1000 : NaN,
+    'describe (all scans)': sum('describe'),
+    'load descriptors': sum('load'),
+    'Delta matrix (in the workers)': sum('matrix'),
+    'tree (and the Delta matrix, if not given)': sum('tree'),
+    'choose categories': sum('choose'),
+    'cut and medoids': sum('cut') + sum('medoids'),
+    'draw': sum('draw'),
+    'run (from the first task)': run ? run.duration / 1000 : NaN,
+  };
+  const workers = [];
+  for (const w of new Set(clocks.map((c) => c.worker))) {
+    const mine = clocks.filter((c) => c.worker === w).sort((a, b) => a.start - b.start);
+    let waiting = 0, replying = 0;
+    for (let k = 1; k < mine.length; k++) {
+      const gap = Math.max(0, mine[k].start - mine[k - 1].end);
+      const late = Math.min(gap, Math.max(0, mine[k].arrived - mine[k - 1].end));
+      waiting += late;
+      replying += gap - late;
+    }
+    workers.push({
+      tasks: mine.length,
+      reading: mine.reduce((s, c) => s + (c.read ? Math.max(0, c.read - c.start) : 0), 0) / 1000,
+      describing: mine.reduce((s, c) => s + (c.end - Math.max(c.read, c.start)), 0) / 1000,
+      waiting: waiting / 1000,
+      replying: replying / 1000,
+    });
+  }
+  const lines = Object.entries(stages).map(([k, v]) => `| ${k} | ${v.toFixed(2)} |`);
+  const wl = workers.map((w, i) => `| worker ${i} | ${w.tasks} | ${w.reading.toFixed(2)} | ${w.describing.toFixed(2)} | ${w.replying.toFixed(2)} | ${w.waiting.toFixed(2)} |`);
+  const text = ['| stage (main thread) | s |', '|---|---|', ...lines, '',
+    '| worker | tasks | waiting for the file\'s bytes (s) | describing (s) | replying (s) | waiting for the next task (s) |', '|---|---|---|---|---|---|', ...wl].join('\n');
+  return { stages, workers, text };
+}
