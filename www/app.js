@@ -23,6 +23,15 @@ const TICK_MS = 200;
 /** From this many scans the workers compute the Delta matrix (below, it takes milliseconds). */
 const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
+/**
+ * The run (state.run) whose Delta matrix the workers compute, if any: its
+ * describing is over (state.running is false) but the pool still works for
+ * it, so a new run or Cancel must cancel the pool then too.
+ * @type {number | null}
+ */
+let matrixOf = null;
+/** Whether the pool works for the page's run (describing, or its Delta matrix). */
+const poolBusy = () => state.running || matrixOf !== null;
 const engine = new Engine(wasm);
 // A scan's file is read here and its bytes moved to the worker (not
 // copied): a worker reads a File only between two descriptions (the bytes
@@ -72,7 +81,7 @@ async function loadFiles(list) {
     return;
   }
   const names = scans.map((s) => baseName(s.name));
-  if (state.running) pool.cancel(); // a bag's topics are listed in the pool, before the run
+  if (poolBusy()) pool.cancel(); // a bag's topics are listed in the pool, before the run
   const inputs = await chooseBagReading(pool, scans.map((s, i) => ({ name: names[i], file: s.file })));
   if (!inputs) return; // files dropped again while a bag's topic was asked for
   const run = { datasetId: datasetId(names), demo: null, inputs };
@@ -116,7 +125,7 @@ function startDemo(scene) {
  * @param {{datasetId: string, demo: State['demo'], inputs: import('./state.js').Input[]}} [run]
  */
 async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false } = {}) {
-  if (state.running) pool.cancel();
+  if (poolBusy()) pool.cancel();
   let params;
   try {
     params = engine.validateParams(JSON.parse($('advanced').value || '{}'), preset());
@@ -160,7 +169,8 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   view.progress(done, all, done < all ? 'cancelled' : 'done', unit);
   if (unit === 'clouds') showBags(inputs, bags);
   loadSet();
-  await matrixFromWorkers(current);
+  // A cancelled run leaves the workers alone: the set computes its matrix.
+  if (done === all) await matrixFromWorkers(current);
   if (!current()) return;
   view.sweep('');
   cluster();
@@ -189,11 +199,15 @@ function loadSet() {
 async function matrixFromWorkers(current) {
   if (!state.set?.usesMatrix || state.scans.length < WORKER_MATRIX_FROM) return;
   const start = performance.now();
+  const run = state.run;
+  matrixOf = run;
   try {
     const m = await matrixInWorkers(pool, /** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson));
     if (current()) engine.setMatrix(m);
   } catch {
-    // cancelled by a new run, or a worker died: the main thread computes it
+    // cancelled (Cancel or a new run), or a worker died: the main thread computes it
+  } finally {
+    if (matrixOf === run) matrixOf = null;
   }
   stageSince('matrix', start);
 }
@@ -298,7 +312,7 @@ async function main() {
   on('demo-indoor', 'click', () => startDemo('indoor'));
   on('demo-outdoor', 'click', () => startDemo('outdoor'));
   on('demo-warehouse', 'click', () => startDemo('warehouse'));
-  on('cancel', 'click', () => state.running && pool.cancel());
+  on('cancel', 'click', () => poolBusy() && pool.cancel());
   dropZone($('drop'), loadFiles);
   on('preset', 'change', () => { showPreset(); if (state.inputs.length) describeAll(); });
   on('apply-advanced', 'click', () => state.inputs.length && describeAll());

@@ -13,8 +13,8 @@
 /**
  * When a task was posted, came to its worker, started, had its file's
  * bytes, ended and its result came back (wall-clock ms): the stage profile
- * that `npm run bench` prints.
- * @typedef {{worker: number, posted: number, arrived: number, start: number, read: number, end: number, received: number}} TaskClock
+ * that `npm run bench` prints; `type` is the task's.
+ * @typedef {{type: string, worker: number, posted: number, arrived: number, start: number, read: number, end: number, received: number}} TaskClock
  */
 
 export class WorkerPool {
@@ -49,7 +49,7 @@ export class WorkerPool {
       if (!job) return;
       if ('partial' in e.data) return job.onPartial?.(e.data.partial);
       slot.jobs.splice(slot.jobs.indexOf(job), 1);
-      if (e.data.clock) this.clocks.push({ worker: this.slots.indexOf(slot), posted: job.posted ?? 0, ...e.data.clock, received: performance.timeOrigin + performance.now() });
+      if (e.data.clock) this.clocks.push({ type: job.task?.type, worker: this.slots.indexOf(slot), posted: job.posted ?? 0, ...e.data.clock, received: performance.timeOrigin + performance.now() });
       if (e.data.ok) job.resolve(e.data.result);
       else job.reject(new Error(e.data.error));
       this.#pump();
