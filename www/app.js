@@ -32,6 +32,8 @@ let state = S.initialState();
 let matrixOf = null;
 /** Whether the pool works for the page's run (describing, or its Delta matrix). */
 const poolBusy = () => state.running || matrixOf !== null;
+/** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
+let unsaved = null;
 const engine = new Engine(wasm);
 // A scan's file is read here and its bytes moved to the worker (not
 // copied): a worker reads a File only between two descriptions (the bytes
@@ -146,13 +148,24 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   let session = null;
   /** @type {[number, number] | null} the progress to show at the next tick */
   let shown = null;
-  // A few times a second: the progress and the results to save (batch.js).
+  /** @type {Promise<unknown>} the progress shown waits for the results it counts to be saved */
+  let saved = Promise.resolve();
+  let finished = false;
+  // A few times a second: the results to save and the progress (batch.js).
+  // The progress is shown once the results it counts are stored, so what
+  // it says survives a reload.
   /** @type {Batch<[number, import('./engine.js').ScanResult]>} */
   const tick = new Batch(TICK_MS, (saves) => {
     if (!current()) return;
-    if (shown) view.progress(shown[0], shown[1], 'running', unit);
-    if (saves.length) (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScans(datasetId, saves));
+    if (saves.length) {
+      // IndexedDB runs transactions on one store in the order they were made: the session's comes first.
+      session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo });
+      saved = Promise.all([saved, saveScans(datasetId, saves).catch((e) => current() && addError('saving', e.message))]);
+    }
+    const show = shown;
+    if (show) saved.then(() => current() && !finished && view.progress(show[0], show[1], 'running', unit));
   });
+  unsaved = tick;
   const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
   const { results, done, total: all, suggestion, bags } = await describeInputs(pool, inputs, { params, byPreset }, {
     onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
@@ -162,6 +175,8 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
     onProgress: (n, all) => ((shown = [n, all]), tick.add()),
   });
   tick.flush();
+  finished = true;
+  if (unsaved === tick) unsaved = null;
   if (!current()) return;
   stageSince('describe', began);
   if (suggestion) state = S.withSuggestion(state, suggestion);
@@ -314,6 +329,9 @@ async function main() {
   on('demo-warehouse', 'click', () => startDemo('warehouse'));
   on('cancel', 'click', () => poolBusy() && pool.cancel());
   dropZone($('drop'), loadFiles);
+  // A reload or a closed tab: store the results of the last fraction of a second too.
+  addEventListener('pagehide', () => unsaved?.flush());
+  document.addEventListener('visibilitychange', () => document.visibilityState === 'hidden' && unsaved?.flush());
   on('preset', 'change', () => { showPreset(); if (state.inputs.length) describeAll(); });
   on('apply-advanced', 'click', () => state.inputs.length && describeAll());
   onThinning(() => state.inputs.some((i) => i.bag) && describeAll({ ...state, inputs: rethinned(state.inputs) }));

@@ -262,11 +262,14 @@ test('a reload during processing keeps the results so far and the names', async 
   await h.page.locator('#legend input').first().fill('pantry');
   await h.page.click('#demo-indoor');
   await h.page.waitForFunction(() => /^([5-9]|\d\d+) \//.test(document.getElementById('progress-text').textContent));
+  // What the progress said is stored: the page shows it once saved.
+  const shown = Number((await h.page.textContent('#progress-text')).match(/^(\d+) \//)[1]);
   await h.page.reload();
   await h.page.waitForFunction(() => document.body.dataset.ready === 'true');
   const info = await h.page.textContent('#info');
   const m = info.match(/Restored (\d+) of 40 scans/);
   assert.ok(m, info);
+  assert.ok(Number(m[1]) >= shown, `${m[1]} restored, ${shown} shown before the reload`);
   assert.match(await h.page.textContent('#cluster-status'), new RegExp(`from ${m[1]} scans`));
   const names = await h.page.evaluate(() => localStorage.getItem('placecat:names:demo-indoor-1-8'));
   assert.match(names, /pantry/);
