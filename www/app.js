@@ -41,11 +41,14 @@ const engine = new Engine(wasm);
 // wait; the main thread is idle meanwhile. Each worker holds four tasks,
 // so the next files are read while it describes: with six reads at once a
 // file took ~30 ms to come (median, 1,000 scans of 1.3 MB, a loaded
-// machine), three descriptions' time. Memory: four files a worker. A bag
-// (or the listing of its topics) has a worker to itself and reads the bag
-// itself, in slices.
+// machine), three descriptions' time. Memory: at most four files a worker,
+// and more than one only while they total 32 MB (large scans, e.g. 1M
+// points, are held one at a time). A bag (or the listing of its topics)
+// has a worker to itself and reads the bag itself, in slices.
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
   depth: 4,
+  bytes: (task) => task.file?.size ?? 0,
+  maxBytes: 32 * 2 ** 20,
   alone: (task) => task.type === 'bag' || task.type === 'bagTopics',
   prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
