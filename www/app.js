@@ -14,7 +14,7 @@ import { beginSession, saveScans, lastSession } from './session.js';
 import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
-import { stage, stageSince } from './stages.js';
+import { stage, stageSince, clearStages } from './stages.js';
 import { matrixInWorkers } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
@@ -75,6 +75,7 @@ const addError = (name, message) => view.errors((state = S.withError(state, name
 
 /** @param {{file: File, name: string}[]} list */
 async function loadFiles(list) {
+  clearStages();
   performance.mark('placecat:files');
   const { scans, truth, poses, other } = sortFiles(list);
   for (const f of truth) await loadTruth(f.file);
@@ -92,7 +93,7 @@ async function loadFiles(list) {
   const run = { datasetId: datasetId(names), demo: null, inputs };
   // The data suggest indoor or outdoor unless the user chose another preset or edited the parameters.
   const own = !['indoor', 'outdoor'].includes(preset()) || $('advanced').value !== JSON.stringify(engine.presetParams(preset()), null, 1);
-  await describeAll(run, { suggest: !own, withPosesFile: poses.length > 0 });
+  await describeAll(run, { suggest: !own, withPosesFile: poses.length > 0, fromFiles: true });
 }
 
 /** @param {File} file */
@@ -126,11 +127,13 @@ function startDemo(scene) {
 
 /**
  * Describe every input in the worker pool, with progress; a newer run supersedes this one.
- * `suggest`: a new data set of files, whose first scan picks the preset (describe.js).
+ * `suggest`: a new data set of files, whose first scan picks the preset (describe.js);
+ * `fromFiles`: files just given (their mark, placecat:files, is this run's).
  * @param {{datasetId: string, demo: State['demo'], inputs: import('./state.js').Input[]}} [run]
  */
-async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false } = {}) {
+async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false, fromFiles = false } = {}) {
   if (poolBusy()) pool.cancel();
+  clearStages(fromFiles ? ['placecat:files'] : []);
   let params;
   try {
     params = engine.validateParams(JSON.parse($('advanced').value || '{}'), preset());
@@ -227,7 +230,7 @@ async function matrixFromWorkers(current) {
   } finally {
     if (matrixOf === run) matrixOf = null;
   }
-  stageSince('matrix', start);
+  if (current()) stageSince('matrix', start); // not into a newer run's measures
 }
 
 function cluster() {

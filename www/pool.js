@@ -1,9 +1,10 @@
 // A pool of module workers, one per core, each with its own wasm instance.
 // Tasks queue; a worker holds up to `depth` of them (and up to `maxBytes` of
-// their files) and runs them in order; the page reads a task's file and moves
-// the bytes to the worker (`prepare`) while the worker describes the one
-// before, so it never waits for the main thread to hand it the next. A task that must
-// run `alone` (a bag: long, with partial replies) gets a worker to itself.
+// their files) and runs them in order; the page reads a task's file and
+// moves the bytes to the worker (`prepare`) while the worker describes the
+// one before, so it never waits for the main thread to hand it the next. A
+// task that must run `alone` (a bag: long, with partial replies) gets a
+// worker to itself.
 // A worker that dies (an uncaught error, out of memory) is replaced; a task
 // it held alone fails, tasks it held together run again, each alone, so
 // that the one that kills a worker is the one that fails. A task may send

@@ -299,6 +299,9 @@ test('a new run started while the workers compute the Delta matrix cancels that 
     const types = await h.page.evaluate(() => /** @type {any} */ (performance.getEntriesByName('placecat:pool').at(-1)).detail.map((c) => c.type));
     assert.deepEqual([...new Set(types)], ['simulate']);
     assert.equal(types.length, 40);
+    // A run begins by forgetting the earlier runs' measures (the superseded one's matrix step included).
+    const counts = await h.page.evaluate(() => ['placecat:pool', 'placecat:run', 'placecat:describe', 'placecat:matrix'].map((n) => performance.getEntriesByName(n).length));
+    assert.deepEqual(counts, [1, 1, 1, 0]);
   } finally {
     await stopHolding();
   }
