@@ -276,49 +276,46 @@ test('a reload during processing keeps the results so far and the names', async 
   await h.page.screenshot({ path: join(ARTIFACTS, 'restored-after-reload.png') });
 });
 
-/** Start the outdoor demo (300 scans: the workers compute its Delta matrix, held HOLD ms) and wait for that step. */
 const HOLD = 15000;
-async function untilMatrixStep() {
-  await h.page.evaluate((ms) => { globalThis.holdDeltaRowsMs = ms; globalThis.deltaRowsHeld = 0; }, HOLD);
-  await h.page.click('#demo-outdoor');
-  await h.page.waitForFunction(() => globalThis.deltaRowsHeld > 0, null, { timeout: 120000 });
+/**
+ * Start the outdoor demo (300 scans: the workers compute its Delta matrix,
+ * held HOLD ms), do `action` during that step and return how long until the
+ * page finished a run after it (ms).
+ * @param {() => Promise<void>} action
+ */
+async function duringMatrixStep(action) {
+  try {
+    await h.page.evaluate((ms) => { globalThis.holdDeltaRowsMs = ms; globalThis.deltaRowsHeld = 0; }, HOLD);
+    await h.page.click('#demo-outdoor');
+    await h.page.waitForFunction(() => globalThis.deltaRowsHeld > 0, null, { timeout: 120000 });
+    const t0 = Date.now();
+    await afterRun(h.page, action);
+    return Date.now() - t0;
+  } finally {
+    await h.page.evaluate(() => { globalThis.holdDeltaRowsMs = 0; });
+  }
 }
-const stopHolding = () => h.page.evaluate(() => { globalThis.holdDeltaRowsMs = 0; });
 
 test('a new run started while the workers compute the Delta matrix cancels that step and finishes with its own scans', async () => {
-  try {
-    await untilMatrixStep();
-    const t0 = Date.now();
-    await afterRun(h.page, () => h.page.click('#demo-indoor'));
-    const took = Date.now() - t0;
-    // Queued behind the held matrix tasks, the 40 scans would take more than HOLD.
-    assert.ok(took < HOLD * 0.6, `the new run took ${took} ms`);
-    assert.match(await h.page.textContent('#progress-text'), /^40 \/ 40 scans.*\(done\)/);
-    assert.match(await h.page.textContent('#cluster-status'), /from 40 scans/);
-    // The pool's clocks of this run are its own 40 scans', none of the old matrix tasks.
-    const types = await h.page.evaluate(() => /** @type {any} */ (performance.getEntriesByName('placecat:pool').at(-1)).detail.map((c) => c.type));
-    assert.deepEqual([...new Set(types)], ['simulate']);
-    assert.equal(types.length, 40);
-    // A run begins by forgetting the earlier runs' measures (the superseded one's matrix step included).
-    const counts = await h.page.evaluate(() => ['placecat:pool', 'placecat:run', 'placecat:describe', 'placecat:matrix'].map((n) => performance.getEntriesByName(n).length));
-    assert.deepEqual(counts, [1, 1, 1, 0]);
-  } finally {
-    await stopHolding();
-  }
+  const took = await duringMatrixStep(() => h.page.click('#demo-indoor'));
+  // Queued behind the held matrix tasks, the 40 scans would take more than HOLD.
+  assert.ok(took < HOLD * 0.6, `the new run took ${took} ms`);
+  assert.match(await h.page.textContent('#progress-text'), /^40 \/ 40 scans.*\(done\)/);
+  assert.match(await h.page.textContent('#cluster-status'), /from 40 scans/);
+  // The pool's clocks of this run are its own 40 scans', none of the old matrix tasks.
+  const types = await h.page.evaluate(() => /** @type {any} */ (performance.getEntriesByName('placecat:pool').at(-1)).detail.map((c) => c.type));
+  assert.deepEqual([...new Set(types)], ['simulate']);
+  assert.equal(types.length, 40);
+  // A run begins by forgetting the earlier runs' measures (the superseded one's matrix step included).
+  const counts = await h.page.evaluate(() => ['placecat:pool', 'placecat:run', 'placecat:describe', 'placecat:matrix'].map((n) => performance.getEntriesByName(n).length));
+  assert.deepEqual(counts, [1, 1, 1, 0]);
 });
 
 test('Cancel while the workers compute the Delta matrix: the page computes it and the run ends at once', async () => {
-  try {
-    await untilMatrixStep();
-    const t0 = Date.now();
-    await afterRun(h.page, () => h.page.click('#cancel'));
-    const took = Date.now() - t0;
-    assert.ok(took < HOLD * 0.6, `the run ended ${took} ms after Cancel`);
-    assert.match(await h.page.textContent('#progress-text'), /^300 \/ 300 scans/);
-    assert.match(await h.page.textContent('#cluster-status'), /from 300 scans/);
-  } finally {
-    await stopHolding();
-  }
+  const took = await duringMatrixStep(() => h.page.click('#cancel'));
+  assert.ok(took < HOLD * 0.6, `the run ended ${took} ms after Cancel`);
+  assert.match(await h.page.textContent('#progress-text'), /^300 \/ 300 scans/);
+  assert.match(await h.page.textContent('#cluster-status'), /from 300 scans/);
 });
 
 test('no console errors and no requests beyond the page origin', async () => {
