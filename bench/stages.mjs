@@ -1,5 +1,6 @@
 // The page's stage breakdown from what it records (www/stages.js measures,
-// the pool's task clocks): where a run's wall time goes, for `npm run bench`.
+// the pool's task clocks of the scans): where a run's wall time goes, for
+// `npm run bench`.
 
 /**
  * @param {{name: string, startTime: number, duration: number, detail?: any}[]} entries the page's
@@ -12,7 +13,8 @@ export function stageBreakdown(entries, timeOrigin) {
   const sum = (name) => entries.filter((e) => e.name === `placecat:${name}`).reduce((s, e) => s + e.duration, 0) / 1000;
   const files = entries.find((e) => e.name === 'placecat:files');
   const run = entries.find((e) => e.name === 'placecat:run');
-  const clocks = /** @type {any[]} */ (entries.find((e) => e.name === 'placecat:pool')?.detail ?? []);
+  // The scans' tasks: the Delta matrix's (deltaRows) have their own stage above.
+  const clocks = /** @type {any[]} */ (entries.find((e) => e.name === 'placecat:pool')?.detail ?? []).filter((c) => c.type === 'describe');
   const firstPosted = Math.min(...clocks.map((c) => c.posted)) - timeOrigin;
   const byStart = [...clocks].sort((a, b) => a.posted - b.posted);
   const stages = {

@@ -14,7 +14,7 @@ import { beginSession, saveScans, lastSession } from './session.js';
 import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
-import { stage, stageSince } from './stages.js';
+import { stage, stageSince, clearStages } from './stages.js';
 import { matrixInWorkers } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
@@ -23,6 +23,17 @@ const TICK_MS = 200;
 /** From this many scans the workers compute the Delta matrix (below, it takes milliseconds). */
 const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
+/**
+ * The run (state.run) whose Delta matrix the workers compute, if any: its
+ * describing is over (state.running is false) but the pool still works for
+ * it, so a new run or Cancel must cancel the pool then too.
+ * @type {number | null}
+ */
+let matrixOf = null;
+/** Whether the pool works for the page's run (describing, or its Delta matrix). */
+const poolBusy = () => state.running || matrixOf !== null;
+/** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
+let unsaved = null;
 const engine = new Engine(wasm);
 // A scan's file is read here and its bytes moved to the worker (not
 // copied): a worker reads a File only between two descriptions (the bytes
@@ -30,11 +41,14 @@ const engine = new Engine(wasm);
 // wait; the main thread is idle meanwhile. Each worker holds four tasks,
 // so the next files are read while it describes: with six reads at once a
 // file took ~30 ms to come (median, 1,000 scans of 1.3 MB, a loaded
-// machine), three descriptions' time. Memory: four files a worker. A bag
-// (or the listing of its topics) has a worker to itself and reads the bag
-// itself, in slices.
+// machine), three descriptions' time. Memory: at most four files a worker,
+// and more than one only while they total 32 MB (large scans, e.g. 1M
+// points, are held one at a time). A bag (or the listing of its topics)
+// has a worker to itself and reads the bag itself, in slices.
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
   depth: 4,
+  bytes: (task) => task.file?.size ?? 0,
+  maxBytes: 32 * 2 ** 20,
   alone: (task) => task.type === 'bag' || task.type === 'bagTopics',
   prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
@@ -61,6 +75,7 @@ const addError = (name, message) => view.errors((state = S.withError(state, name
 
 /** @param {{file: File, name: string}[]} list */
 async function loadFiles(list) {
+  clearStages();
   performance.mark('placecat:files');
   const { scans, truth, poses, other } = sortFiles(list);
   for (const f of truth) await loadTruth(f.file);
@@ -72,13 +87,13 @@ async function loadFiles(list) {
     return;
   }
   const names = scans.map((s) => baseName(s.name));
-  if (state.running) pool.cancel(); // a bag's topics are listed in the pool, before the run
+  if (poolBusy()) pool.cancel(); // a bag's topics are listed in the pool, before the run
   const inputs = await chooseBagReading(pool, scans.map((s, i) => ({ name: names[i], file: s.file })));
   if (!inputs) return; // files dropped again while a bag's topic was asked for
   const run = { datasetId: datasetId(names), demo: null, inputs };
   // The data suggest indoor or outdoor unless the user chose another preset or edited the parameters.
   const own = !['indoor', 'outdoor'].includes(preset()) || $('advanced').value !== JSON.stringify(engine.presetParams(preset()), null, 1);
-  await describeAll(run, { suggest: !own, withPosesFile: poses.length > 0 });
+  await describeAll(run, { suggest: !own, withPosesFile: poses.length > 0, fromFiles: true });
 }
 
 /** @param {File} file */
@@ -112,11 +127,13 @@ function startDemo(scene) {
 
 /**
  * Describe every input in the worker pool, with progress; a newer run supersedes this one.
- * `suggest`: a new data set of files, whose first scan picks the preset (describe.js).
+ * `suggest`: a new data set of files, whose first scan picks the preset (describe.js);
+ * `fromFiles`: files just given (their mark, placecat:files, is this run's).
  * @param {{datasetId: string, demo: State['demo'], inputs: import('./state.js').Input[]}} [run]
  */
-async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false } = {}) {
-  if (state.running) pool.cancel();
+async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false, fromFiles = false } = {}) {
+  if (poolBusy()) pool.cancel();
+  clearStages(fromFiles ? ['placecat:files'] : []);
   let params;
   try {
     params = engine.validateParams(JSON.parse($('advanced').value || '{}'), preset());
@@ -137,13 +154,24 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   let session = null;
   /** @type {[number, number] | null} the progress to show at the next tick */
   let shown = null;
-  // A few times a second: the progress and the results to save (batch.js).
+  /** @type {Promise<unknown>} the progress shown waits for the results it counts to be saved */
+  let saved = Promise.resolve();
+  let finished = false;
+  // A few times a second: the results to save and the progress (batch.js).
+  // The progress is shown once the results it counts are stored, so what
+  // it says survives a reload.
   /** @type {Batch<[number, import('./engine.js').ScanResult]>} */
   const tick = new Batch(TICK_MS, (saves) => {
     if (!current()) return;
-    if (shown) view.progress(shown[0], shown[1], 'running', unit);
-    if (saves.length) (session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo })).then(() => saveScans(datasetId, saves));
+    if (saves.length) {
+      // IndexedDB runs transactions on one store in the order they were made: the session's comes first.
+      session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo });
+      saved = Promise.all([saved, saveScans(datasetId, saves).catch((e) => current() && addError('saving', e.message))]);
+    }
+    const show = shown;
+    if (show) saved.then(() => current() && !finished && view.progress(show[0], show[1], 'running', unit));
   });
+  unsaved = tick;
   const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
   const { results, done, total: all, suggestion, bags } = await describeInputs(pool, inputs, { params, byPreset }, {
     onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
@@ -153,6 +181,8 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
     onProgress: (n, all) => ((shown = [n, all]), tick.add()),
   });
   tick.flush();
+  finished = true;
+  if (unsaved === tick) unsaved = null;
   if (!current()) return;
   stageSince('describe', began);
   if (suggestion) state = S.withSuggestion(state, suggestion);
@@ -160,7 +190,8 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   view.progress(done, all, done < all ? 'cancelled' : 'done', unit);
   if (unit === 'clouds') showBags(inputs, bags);
   loadSet();
-  await matrixFromWorkers(current);
+  // A cancelled run leaves the workers alone: the set computes its matrix.
+  if (done === all) await matrixFromWorkers(current);
   if (!current()) return;
   view.sweep('');
   cluster();
@@ -189,13 +220,17 @@ function loadSet() {
 async function matrixFromWorkers(current) {
   if (!state.set?.usesMatrix || state.scans.length < WORKER_MATRIX_FROM) return;
   const start = performance.now();
+  const run = state.run;
+  matrixOf = run;
   try {
     const m = await matrixInWorkers(pool, /** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson));
     if (current()) engine.setMatrix(m);
   } catch {
-    // cancelled by a new run, or a worker died: the main thread computes it
+    // cancelled (Cancel or a new run), or a worker died: the main thread computes it
+  } finally {
+    if (matrixOf === run) matrixOf = null;
   }
-  stageSince('matrix', start);
+  if (current()) stageSince('matrix', start); // not into a newer run's measures
 }
 
 function cluster() {
@@ -298,8 +333,11 @@ async function main() {
   on('demo-indoor', 'click', () => startDemo('indoor'));
   on('demo-outdoor', 'click', () => startDemo('outdoor'));
   on('demo-warehouse', 'click', () => startDemo('warehouse'));
-  on('cancel', 'click', () => state.running && pool.cancel());
+  on('cancel', 'click', () => poolBusy() && pool.cancel());
   dropZone($('drop'), loadFiles);
+  // A reload or a closed tab: store the results of the last fraction of a second too.
+  addEventListener('pagehide', () => unsaved?.flush());
+  document.addEventListener('visibilitychange', () => document.visibilityState === 'hidden' && unsaved?.flush());
   on('preset', 'change', () => { showPreset(); if (state.inputs.length) describeAll(); });
   on('apply-advanced', 'click', () => state.inputs.length && describeAll());
   onThinning(() => state.inputs.some((i) => i.bag) && describeAll({ ...state, inputs: rethinned(state.inputs) }));

@@ -1,8 +1,10 @@
 // A pool of module workers, one per core, each with its own wasm instance.
-// Tasks queue; a worker holds up to `depth` of them and runs them in order
-// (worker.js starts reading the next task's file while it describes one):
-// it never waits for the main thread to hand it the next. A task that must
-// run `alone` (a bag: long, with partial replies) gets a worker to itself.
+// Tasks queue; a worker holds up to `depth` of them (and up to `maxBytes` of
+// their files) and runs them in order; the page reads a task's file and
+// moves the bytes to the worker (`prepare`) while the worker describes the
+// one before, so it never waits for the main thread to hand it the next. A
+// task that must run `alone` (a bag: long, with partial replies) gets a
+// worker to itself.
 // A worker that dies (an uncaught error, out of memory) is replaced; a task
 // it held alone fails, tasks it held together run again, each alone, so
 // that the one that kills a worker is the one that fails. A task may send
@@ -13,21 +15,26 @@
 /**
  * When a task was posted, came to its worker, started, had its file's
  * bytes, ended and its result came back (wall-clock ms): the stage profile
- * that `npm run bench` prints.
- * @typedef {{worker: number, posted: number, arrived: number, start: number, read: number, end: number, received: number}} TaskClock
+ * that `npm run bench` prints; `type` is the task's.
+ * @typedef {{type: string, worker: number, posted: number, arrived: number, start: number, read: number, end: number, received: number}} TaskClock
  */
 
 export class WorkerPool {
   /**
    * @param {URL} url the worker module @param {number} [size]
-   * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any) => Promise<{task: any, transfer: Transferable[]}> | null}} [how]
+   * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any) => Promise<{task: any, transfer: Transferable[]}> | null,
+   *   bytes?: (task: any) => number, maxBytes?: number}} [how]
    *   `depth`: tasks a worker holds at once; `alone`: the tasks that get a worker to themselves; `prepare`: work on the
-   *   main thread before a task is posted (none: null), e.g. reading its file, whose failure is the task's
+   *   main thread before a task is posted (none: null), e.g. reading its file, whose failure is the task's;
+   *   `bytes`: what a task holds in memory (its file), `maxBytes`: a worker takes another task only while the tasks
+   *   it holds stay within this many bytes (it always takes one)
    */
-  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false, prepare = () => null } = {}) {
+  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false, prepare = () => null, bytes = () => 0, maxBytes = Infinity } = {}) {
     this.url = url;
     this.size = size;
     this.depth = depth;
+    this.bytes = bytes;
+    this.maxBytes = maxBytes;
     this.alone = alone;
     this.prepare = prepare;
     /** @type {Job[]} */
@@ -49,7 +56,7 @@ export class WorkerPool {
       if (!job) return;
       if ('partial' in e.data) return job.onPartial?.(e.data.partial);
       slot.jobs.splice(slot.jobs.indexOf(job), 1);
-      if (e.data.clock) this.clocks.push({ worker: this.slots.indexOf(slot), posted: job.posted ?? 0, ...e.data.clock, received: performance.timeOrigin + performance.now() });
+      if (e.data.clock) this.clocks.push({ type: job.task?.type, worker: this.slots.indexOf(slot), posted: job.posted ?? 0, ...e.data.clock, received: performance.timeOrigin + performance.now() });
       if (e.data.ok) job.resolve(e.data.result);
       else job.reject(new Error(e.data.error));
       this.#pump();
@@ -70,18 +77,23 @@ export class WorkerPool {
     return slot;
   }
 
-  /** Hand queued tasks to the workers: one to each idle worker first, then up to `depth` each. */
+  /** Hand queued tasks to the workers: one to each idle worker first, then up to `depth` (and `maxBytes`) each. */
   #pump() {
     for (let held = 0; held < this.depth; held++) {
       for (const slot of this.slots) {
         const next = this.queue[0];
         if (!next) return;
-        if (slot.jobs.length !== held || (held > 0 && (next.alone || slot.jobs.some((j) => j.alone)))) continue;
+        if (slot.jobs.length !== held || (held > 0 && (next.alone || slot.jobs.some((j) => j.alone) || !this.#fits(slot, next)))) continue;
         this.queue.shift();
         slot.jobs.push(next);
         this.#post(slot, next);
       }
     }
+  }
+
+  /** Whether `job` joins what `slot` holds within `maxBytes`. @param {WorkerSlot} slot @param {Job} job */
+  #fits(slot, job) {
+    return slot.jobs.reduce((sum, j) => sum + this.bytes(j.task), this.bytes(job.task)) <= this.maxBytes;
   }
 
   /** Post a job, once `prepare` (if it has work for the task) is done; a job dropped meanwhile is not posted. @param {WorkerSlot} slot @param {Job} job */

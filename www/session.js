@@ -1,6 +1,6 @@
-// Results survive a reload: every described scan is written to IndexedDB
-// as it arrives (descriptor, summary, preview, pose, label), per data set,
-// and the last session is restored on start.
+// Results survive a reload: described scans are written to IndexedDB a few
+// times a second, in batches (descriptor, summary, preview, pose, label),
+// per data set, and the last session is restored on start.
 const DB = 'placecat';
 const STORE = 'scans';
 const META = 'sessions';
@@ -46,14 +46,21 @@ export function beginSession(datasetId, info) {
   }).catch(() => {});
 }
 
-/** Store described scans, [index, scan] each, in one transaction. */
+/**
+ * Store described scans, [index, scan] each, in one transaction (one put
+ * that fails aborts them all): rejects with the error and how many were lost.
+ */
 export function saveScans(datasetId, scans) {
   return tx([STORE], 'readwrite', (t) => {
     const store = t.objectStore(STORE);
     for (const [index, { name, descriptorJson, summary, preview, site, pose, label, format }] of scans) {
       store.put({ datasetId, index, name, descriptorJson, summary, preview, site, pose, label, format });
     }
-  }).catch(() => {});
+    // Commit now, not when the event loop comes back: a batch saved as the page is hidden (a reload) gets written.
+    t.commit?.();
+  }).catch((e) => {
+    throw new Error(`${scans.length} results could not be stored in this browser (${e?.message ?? e}); a reload will not restore them`);
+  });
 }
 
 /** The last session's data set and its scans in order, or null. */

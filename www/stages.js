@@ -19,3 +19,16 @@ export function stage(name, fn) {
 export function stageSince(name, start) {
   performance.measure(`placecat:${name}`, { start, end: performance.now() });
 }
+
+/**
+ * Forget the marks and measures of earlier runs (each run's are read after
+ * it; a page used for hours would otherwise pile them up), but those named
+ * in `keep`. @param {string[]} [keep] e.g. the mark of the files just given
+ */
+export function clearStages(keep = []) {
+  for (const e of performance.getEntries()) {
+    if (!e.name.startsWith('placecat:') || keep.includes(e.name)) continue;
+    if (e.entryType === 'mark') performance.clearMarks(e.name);
+    else if (e.entryType === 'measure') performance.clearMeasures(e.name);
+  }
+}

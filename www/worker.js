@@ -1,6 +1,7 @@
-// One wasm instance per worker. Each task reads and describes one scan
-// (a File, so memory holds the files of the tasks the worker holds, two
-// with the page's pool), simulates one demo scan,
+// One wasm instance per worker. Each task describes one scan (its bytes,
+// read and moved here by the page, pool.js; memory holds the bytes of the
+// tasks the worker holds: up to four, within 32 MB, with the page's pool),
+// simulates one demo scan, computes rows of the Delta matrix (matrix.js),
 // or classifies one scan with a model; the engine does the wasm work. A
 // ROS bag is read in slices and its clouds posted one at a time as partial
 // replies (bagreader.js).

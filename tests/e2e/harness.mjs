@@ -19,6 +19,7 @@ export async function start() {
   });
   const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 1000 } });
   await context.addInitScript(dieOnFile);
+  await context.addInitScript(holdDeltaRows);
   const page = await context.newPage();
   const problems = [];
   const requests = [];
@@ -53,6 +54,27 @@ function dieOnFile() {
       this.terminate();
       this.dispatchEvent(new ErrorEvent('error', { message: 'worker crashed on purpose', cancelable: true }));
     });
+  };
+}
+
+/**
+ * Fault injection as above: while globalThis.holdDeltaRowsMs is set, a
+ * worker handed a Delta-matrix task (deltaRows) gets it that many ms late
+ * and everything posted to it after that, after it: a slow matrix step
+ * that keeps its worker busy. globalThis.deltaRowsHeld counts the tasks held.
+ */
+function holdDeltaRows() {
+  const post = Worker.prototype.postMessage;
+  /** @type {WeakMap<Worker, Promise<void>>} */
+  const behind = new WeakMap();
+  /** @this {Worker} */
+  Worker.prototype.postMessage = function (message, ...rest) {
+    const ms = globalThis.holdDeltaRowsMs;
+    const matrix = message?.task?.type === 'deltaRows';
+    if (!ms || (!matrix && !behind.has(this))) return post.call(this, message, ...rest);
+    if (matrix) globalThis.deltaRowsHeld = (globalThis.deltaRowsHeld || 0) + 1;
+    const wait = matrix ? new Promise((ok) => setTimeout(ok, ms)) : Promise.resolve();
+    behind.set(this, (behind.get(this) ?? Promise.resolve()).then(() => wait).then(() => post.call(this, message, ...rest)));
   };
 }
 

@@ -262,15 +262,60 @@ test('a reload during processing keeps the results so far and the names', async 
   await h.page.locator('#legend input').first().fill('pantry');
   await h.page.click('#demo-indoor');
   await h.page.waitForFunction(() => /^([5-9]|\d\d+) \//.test(document.getElementById('progress-text').textContent));
+  // What the progress said is stored: the page shows it once saved.
+  const shown = Number((await h.page.textContent('#progress-text')).match(/^(\d+) \//)[1]);
   await h.page.reload();
   await h.page.waitForFunction(() => document.body.dataset.ready === 'true');
   const info = await h.page.textContent('#info');
   const m = info.match(/Restored (\d+) of 40 scans/);
   assert.ok(m, info);
+  assert.ok(Number(m[1]) >= shown, `${m[1]} restored, ${shown} shown before the reload`);
   assert.match(await h.page.textContent('#cluster-status'), new RegExp(`from ${m[1]} scans`));
   const names = await h.page.evaluate(() => localStorage.getItem('placecat:names:demo-indoor-1-8'));
   assert.match(names, /pantry/);
   await h.page.screenshot({ path: join(ARTIFACTS, 'restored-after-reload.png') });
+});
+
+const HOLD = 20000; // long beside the 40 scans of the new run, even on a loaded machine
+/**
+ * Start the outdoor demo (300 scans: the workers compute its Delta matrix,
+ * held HOLD ms), do `action` during that step and return how long until the
+ * page finished a run after it (ms).
+ * @param {() => Promise<void>} action
+ */
+async function duringMatrixStep(action) {
+  try {
+    await h.page.evaluate((ms) => { globalThis.holdDeltaRowsMs = ms; globalThis.deltaRowsHeld = 0; }, HOLD);
+    await h.page.click('#demo-outdoor');
+    await h.page.waitForFunction(() => globalThis.deltaRowsHeld > 0, null, { timeout: 120000 });
+    const t0 = Date.now();
+    await afterRun(h.page, action);
+    return Date.now() - t0;
+  } finally {
+    await h.page.evaluate(() => { globalThis.holdDeltaRowsMs = 0; });
+  }
+}
+
+test('a new run started while the workers compute the Delta matrix cancels that step and finishes with its own scans', async () => {
+  const took = await duringMatrixStep(() => h.page.click('#demo-indoor'));
+  // Queued behind the held matrix tasks, the 40 scans would take more than HOLD.
+  assert.ok(took < HOLD * 0.6, `the new run took ${took} ms`);
+  assert.match(await h.page.textContent('#progress-text'), /^40 \/ 40 scans.*\(done\)/);
+  assert.match(await h.page.textContent('#cluster-status'), /from 40 scans/);
+  // The pool's clocks of this run are its own 40 scans', none of the old matrix tasks.
+  const types = await h.page.evaluate(() => /** @type {any} */ (performance.getEntriesByName('placecat:pool').at(-1)).detail.map((c) => c.type));
+  assert.deepEqual([...new Set(types)], ['simulate']);
+  assert.equal(types.length, 40);
+  // A run begins by forgetting the earlier runs' measures (the superseded one's matrix step included).
+  const counts = await h.page.evaluate(() => ['placecat:pool', 'placecat:run', 'placecat:describe', 'placecat:matrix'].map((n) => performance.getEntriesByName(n).length));
+  assert.deepEqual(counts, [1, 1, 1, 0]);
+});
+
+test('Cancel while the workers compute the Delta matrix: the page computes it and the run ends at once', async () => {
+  const took = await duringMatrixStep(() => h.page.click('#cancel'));
+  assert.ok(took < HOLD * 0.6, `the run ended ${took} ms after Cancel`);
+  assert.match(await h.page.textContent('#progress-text'), /^300 \/ 300 scans/);
+  assert.match(await h.page.textContent('#cluster-status'), /from 300 scans/);
 });
 
 test('no console errors and no requests beyond the page origin', async () => {

@@ -447,7 +447,7 @@ fn a_matrix_assembled_from_shares_of_rows_is_the_matrix_and_a_bad_one_is_refused
         whole.hkmeans(&HkMeansParams::new(3)).unwrap()
     );
 
-    let mut other = Collection::from_parts(params, named()).unwrap();
+    let mut other = Collection::from_parts(params.clone(), named()).unwrap();
     let mut lopsided = data.clone();
     lopsided[1] += 0.5; // (0, 1) no longer equals (1, 0)
     let e = other
@@ -462,4 +462,28 @@ fn a_matrix_assembled_from_shares_of_rows_is_the_matrix_and_a_bad_one_is_refused
         .unwrap_err();
     assert!(e.to_string().contains("values for"), "{e}");
     assert!(other.delta_rows(&[n]).is_err());
+
+    // Entries that are no Delta, symmetric so that only that check can refuse them.
+    for (bad, says) in [(f32::NAN, "NaN"), (f32::INFINITY, "inf"), (-0.25, "-0.25")] {
+        let mut m = data.clone();
+        m[2 * n + 3] = bad;
+        m[3 * n + 2] = bad;
+        let e = other.set_matrix(DistanceMatrix { n, data: m }).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!("invalid parameter: Delta matrix: (2, 3) is {says}, not a finite Delta of 0 or more")
+        );
+    }
+    // Another set's matrix of the same size (the same scans in reverse order): valid, but not this set's.
+    let mut reversed = Collection::from_parts(params, named().rev()).unwrap();
+    let theirs = reversed.matrix().unwrap().clone();
+    assert_ne!(theirs.data, data);
+    let e = other.set_matrix(theirs).unwrap_err();
+    assert!(matches!(e, placecat::Error::Mismatch(_)), "{e}");
+    assert!(
+        e.to_string().contains("the matrix is not this set's"),
+        "{e}"
+    );
+    // A matrix refused leaves the set computing its own.
+    assert_eq!(other.matrix().unwrap().data, data);
 }

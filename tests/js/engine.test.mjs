@@ -211,6 +211,15 @@ test('the Delta matrix from the workers\' shares (matrix.js) is the set\'s own, 
   const lopsided = m.slice();
   lopsided[1] += 0.5;
   assert.throws(() => e.setMatrix(lopsided), /differs/);
+  const nan = m.slice();
+  nan[1] = nan[40] = NaN;
+  assert.throws(() => e.setMatrix(nan), /\(0, 1\) is NaN, not a finite Delta/);
+  // Another set's: the same scans in reverse order.
+  const reversed = scoped(new wasm.DescriptorSet(params, undefined), (set) => {
+    for (const j of [...jsons].reverse()) set.addJson(j);
+    return set.deltaMatrix();
+  });
+  assert.throws(() => e.setMatrix(reversed), /the matrix is not this set's/);
   e.setMatrix(m);
   assert.equal(e.delta(3, 17), m[3 * 40 + 17]);
   assert.ok(e.hkmeans(0).nodes.length > 40);

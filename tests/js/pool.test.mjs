@@ -1,5 +1,7 @@
-// The worker pool's scheduling with stand-in workers: tasks held two at a
-// time, bags alone, and a worker's death blamed on the task that caused it.
+// The worker pool's scheduling with stand-in workers: tasks held several at
+// a time within a byte budget, bags alone, a worker's death blamed on the
+// task that caused it, and the main thread's preparation (reading a file)
+// before a task is posted.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { WorkerPool } from '../../www/pool.js';
@@ -10,7 +12,7 @@ class FakeWorker {
   /** @type {FakeWorker[]} */
   static all = [];
   constructor() {
-    /** @type {{id: number, task: any}[]} */
+    /** @type {{id: number, task: any, transfer?: any[]}[]} */
     this.posted = [];
     this.terminated = false;
     /** @type {(e: any) => void} */
@@ -19,22 +21,23 @@ class FakeWorker {
     this.onerror = () => {};
     FakeWorker.all.push(this);
   }
-  postMessage(m) { this.posted.push(m); }
+  postMessage(m, transfer) { this.posted.push({ ...m, transfer }); }
   terminate() { this.terminated = true; }
   /** Answer the oldest task not answered yet. */
   answer(ok = true) {
     const m = this.posted.find((p) => !p.answered);
     m.answered = true;
-    this.onmessage({ data: ok ? { id: m.id, ok: true, result: m.task.name } : { id: m.id, ok: false, error: `${m.task.name}: bad` } });
+    const clock = { arrived: 1, start: 2, read: 3, end: 4 };
+    this.onmessage({ data: ok ? { id: m.id, ok: true, result: m.task.name, clock } : { id: m.id, ok: false, error: `${m.task.name}: bad` } });
   }
   die() { this.onerror({ message: 'out of memory', preventDefault() {} }); }
   held() { return this.posted.filter((p) => !p.answered).map((p) => p.task.name); }
 }
 globalThis.Worker = /** @type {any} */ (FakeWorker);
 
-const pool = (depth) => {
+const pool = (depth, how = {}) => {
   FakeWorker.all = [];
-  return new WorkerPool(/** @type {any} */ ('w.js'), 2, { depth, alone: (t) => t.type === 'bag' });
+  return new WorkerPool(/** @type {any} */ ('w.js'), 2, { depth, alone: (t) => t.type === 'bag', ...how });
 };
 const settle = () => new Promise((ok) => setTimeout(ok, 0));
 
@@ -50,7 +53,90 @@ test('each worker holds two tasks: one each first, then a second each; an answer
   for (const w of [w0, w0, w1, w1]) w.answer();
   await settle();
   assert.deepEqual(done.sort(), ['a', 'b', 'c', 'd', 'e']);
-  assert.equal(p.clocks.length, 0, 'stand-in workers send no clocks');
+  // Each answer's clock is kept with its task's type and worker, in the order the answers came.
+  assert.deepEqual(p.clocks.map((c) => [c.type, c.worker, c.start]), [['describe', 1, 2], ['describe', 0, 2], ['describe', 0, 2], ['describe', 1, 2], ['describe', 1, 2]]);
+});
+
+test('a worker takes another task only while the files it holds stay within maxBytes, and always takes one', async () => {
+  const p = pool(4, { bytes: (t) => t.size, maxBytes: 32 });
+  for (const [name, size] of [['a', 10], ['b', 10], ['c', 10], ['d', 10], ['e', 40], ['f', 5]]) p.run({ type: 'describe', name, size });
+  const [w0, w1] = FakeWorker.all;
+  // 10 + 10 each; e (40) joins neither, and f waits behind it.
+  assert.deepEqual([w0.held(), w1.held()], [['a', 'c'], ['b', 'd']]);
+  w0.answer();
+  await settle();
+  assert.deepEqual(w0.held(), ['c'], '10 + 40 is over 32');
+  w0.answer();
+  await settle();
+  // Alone, e goes over the budget; f (5) then joins b and d (25), not e (45).
+  assert.deepEqual([w0.held(), w1.held()], [['e'], ['b', 'd', 'f']]);
+});
+
+/** A promise settled from outside. */
+const deferred = () => {
+  let resolve, reject;
+  const promise = new Promise((ok, fail) => { resolve = ok; reject = fail; });
+  return { promise, resolve, reject };
+};
+/** What the page's prepare does: the file's bytes, moved to the worker. */
+const readBytes = (t) => ({ task: { ...t, file: undefined, bytes: t.file.bytes }, transfer: [t.file.bytes] });
+
+test('prepare: the bytes it reads are posted and transferred, not the file', async () => {
+  const p = pool(2, { prepare: (t) => Promise.resolve(readBytes(t)) });
+  const bytes = new ArrayBuffer(8);
+  p.run({ type: 'describe', name: 'a', file: { bytes } });
+  await settle();
+  const [m] = FakeWorker.all[0].posted;
+  assert.equal(m.task.bytes, bytes);
+  assert.equal(m.task.file, undefined);
+  assert.deepEqual(m.transfer, [bytes]);
+});
+
+test('prepare: a read that fails fails its task alone, with its error, and the next task takes its place', async () => {
+  const p = pool(2, { prepare: (t) => t.name === 'x' ? Promise.reject(new Error('x.ply: could not be read')) : Promise.resolve(readBytes(t)) });
+  const errors = [];
+  const names = ['a', 'x', 'c', 'd', 'e'];
+  const all = p.runAll(names.map((name) => ({ type: 'describe', name, file: { bytes: new ArrayBuffer(1) } })), {
+    onResult: () => {}, onError: (i, e) => errors.push(`${names[i]}: ${e.message}`), onSettled: () => {},
+  });
+  await settle();
+  const [w0, w1] = FakeWorker.all;
+  assert.deepEqual(errors, ['x: x.ply: could not be read']);
+  // x was never posted; e came in its place.
+  assert.deepEqual([w0.held(), w1.held()], [['a', 'c'], ['d', 'e']]);
+  for (const w of [w0, w0, w1, w1]) w.answer();
+  const { results, done } = await all;
+  assert.deepEqual([...results], ['a', undefined, 'c', 'd', 'e']);
+  assert.equal(1 in results, false, 'a hole where x failed');
+  assert.equal(done, 5);
+});
+
+test('prepare: a read that ends after cancel, or after its worker died, is not posted to that worker', async () => {
+  const reads = [];
+  const p = pool(2, { prepare: (t) => { const d = deferred(); reads.push({ name: t.name, ...d }); return d.promise; } });
+  p.run({ type: 'describe', name: 'a', file: { bytes: new ArrayBuffer(1) } }).catch(() => {});
+  p.cancel();
+  reads[0].resolve(readBytes({ name: 'a', file: { bytes: new ArrayBuffer(1) } }));
+  await settle();
+  assert.deepEqual(FakeWorker.all.map((w) => w.posted.length), [0, 0, 0], 'the cancelled read reaches no worker');
+
+  reads.length = 0;
+  const q = pool(2, { prepare: (t) => { const d = deferred(); reads.push({ name: t.name, ...d }); return d.promise; } });
+  for (const name of ['a', 'b', 'c', 'd']) q.run({ type: 'describe', name, file: { bytes: new ArrayBuffer(1) } }).catch(() => {});
+  const [w0] = FakeWorker.all;
+  assert.deepEqual(reads.map((r) => r.name), ['a', 'b', 'c', 'd']);
+  // w0 was to get a and c; it dies before their reads end. a runs again alone on a new worker, read again.
+  w0.die();
+  await settle();
+  for (const r of reads.slice(0, 4)) r.resolve(readBytes({ name: r.name, file: { bytes: new ArrayBuffer(1) } }));
+  await settle();
+  const w2 = FakeWorker.all[2];
+  assert.equal(w0.posted.length, 0, 'nothing posted to the dead worker');
+  assert.deepEqual(w2.posted.length, 0, 'the first reads are not posted to its successor');
+  assert.deepEqual(reads.map((r) => r.name), ['a', 'b', 'c', 'd', 'a']);
+  reads[4].resolve(readBytes({ name: 'a', file: { bytes: new ArrayBuffer(1) } }));
+  await settle();
+  assert.deepEqual(w2.posted.map((m) => m.task.name), ['a']);
 });
 
 test('a bag has a worker to itself, and nothing joins it', async () => {
