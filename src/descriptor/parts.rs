@@ -73,9 +73,15 @@ impl PartKind {
         false
     }
 
+    /// Whether the part reads the points' ranges and azimuths
+    /// ([`PolarScan`]): `height_range` and `esf` do not.
+    pub fn needs_polar(self) -> bool {
+        matches!(self, PartKind::Slice | PartKind::Ring | PartKind::Clutter)
+    }
+
     /// Compute the part from a scan's points (sensor frame, z up).
     pub fn describe(self, points: &[[f32; 3]]) -> Vec<f32> {
-        self.describe_scan(&PolarScan::new(points))
+        describe_parts(points, &[self]).pop().unwrap_or_default()
     }
 
     /// Compute the part from a scan whose ranges and azimuths are
@@ -92,6 +98,26 @@ impl PartKind {
         debug_assert_eq!(v.len(), self.len());
         v
     }
+}
+
+/// The values of each of `kinds` for a scan's points. The points' ranges
+/// and azimuths ([`PolarScan`]) are computed once, and only when a part
+/// that reads them is asked for: `height_range` and `esf` alone cost no
+/// `hypot` or `atan2` pass.
+pub fn describe_parts(points: &[[f32; 3]], kinds: &[PartKind]) -> Vec<Vec<f32>> {
+    let scan = std::cell::OnceCell::new();
+    kinds
+        .iter()
+        .map(|&kind| {
+            let v = match kind {
+                PartKind::HeightRange => height_range::describe(points),
+                PartKind::Esf => esf::describe(points),
+                _ => kind.describe_scan(scan.get_or_init(|| PolarScan::new(points))),
+            };
+            debug_assert_eq!(v.len(), kind.len());
+            v
+        })
+        .collect()
 }
 
 /// One extra part and its weight in the distance.
@@ -278,6 +304,35 @@ mod tests {
             .sum();
         assert!((parts_distance(&a, &b) - want).abs() < 1e-5);
         assert_eq!(a.len(), cumulative_len(PartKind::HeightRange));
+    }
+
+    /// `height_range` and `esf` never build a [`PolarScan`] (a `hypot`
+    /// and `atan2` pass over every point that they do not read); slice,
+    /// ring and clutter together build one.
+    #[test]
+    fn polar_coordinates_are_made_once_and_only_when_read() {
+        let pts: Vec<[f32; 3]> = (0..400)
+            .map(|i| {
+                let a = i as f32 * 0.05;
+                [3.0 * a.cos(), 2.0 * a.sin(), (i % 7) as f32 * 0.3 - 1.0]
+            })
+            .collect();
+        let built = |kinds: &[PartKind]| {
+            let before = super::super::polar::built();
+            let v = describe_parts(&pts, kinds);
+            assert_eq!(v.len(), kinds.len());
+            super::super::polar::built() - before
+        };
+        assert_eq!(built(&[PartKind::HeightRange]), 0);
+        assert_eq!(built(&[PartKind::Esf]), 0);
+        assert_eq!(built(&[PartKind::HeightRange, PartKind::Esf]), 0);
+        assert_eq!(built(&PartKind::ALL), 1);
+        let before = super::super::polar::built();
+        PartKind::Esf.describe(&pts);
+        PartKind::HeightRange.describe(&pts);
+        assert_eq!(super::super::polar::built(), before);
+        PartKind::Ring.describe(&pts);
+        assert_eq!(super::super::polar::built(), before + 1);
     }
 
     /// The whole mass at opposite ends is the largest distance: 1.
