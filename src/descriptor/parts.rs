@@ -13,7 +13,7 @@
 use super::polar::PolarScan;
 use super::{clutter, esf, height_range, ring, slice};
 use crate::cloud::is_finite;
-use rustc_hash::FxHashSet;
+use rustc_hash::{FxHashMap, FxHashSet};
 use serde::{Deserialize, Serialize};
 
 /// Most parts one descriptor may have (one of each kind).
@@ -231,7 +231,9 @@ pub fn sector_of(p: &[f32; 3], sectors: usize) -> usize {
 /// One point per occupied voxel of edge `size` (the first point seen in
 /// it), finite points only, in a fixed order. A lidar samples near
 /// surfaces far more densely than far ones; statistics of these points
-/// weigh surfaces by area instead.
+/// weigh surfaces by area instead. The point kept depends on the points'
+/// order (used by `height_range`, which is in no preset;
+/// [`voxel_lowest`] does not).
 pub fn voxel_sample(points: &[[f32; 3]], size: f32) -> Vec<[f32; 3]> {
     let inv = 1.0 / size;
     let mut seen = FxHashSet::default();
@@ -244,6 +246,36 @@ pub fn voxel_sample(points: &[[f32; 3]], size: f32) -> Vec<[f32; 3]> {
         })
         .copied()
         .collect()
+}
+
+/// One point per occupied voxel of edge `size`, finite points only: the
+/// lowest of the voxel's points (least by z, then x, then y, in
+/// `f32::total_cmp`), listed in the order of the voxels' keys. Neither the
+/// points kept nor their order depend on the order of `points`, so a part
+/// summed over them is the same bit for bit for any order of a scan.
+pub fn voxel_lowest(points: &[[f32; 3]], size: f32) -> Vec<[f32; 3]> {
+    let inv = 1.0 / size;
+    let below = |a: &[f32; 3], b: &[f32; 3]| {
+        (a[2].total_cmp(&b[2]))
+            .then(a[0].total_cmp(&b[0]))
+            .then(a[1].total_cmp(&b[1]))
+            .is_lt()
+    };
+    let mut lowest: FxHashMap<[i32; 3], [f32; 3]> = FxHashMap::default();
+    for p in points.iter().filter(|p| is_finite(p)) {
+        let k = p.map(|v| (v * inv).floor() as i32);
+        lowest
+            .entry(k)
+            .and_modify(|q| {
+                if below(p, q) {
+                    *q = *p
+                }
+            })
+            .or_insert(*p);
+    }
+    let mut voxels: Vec<([i32; 3], [f32; 3])> = lowest.into_iter().collect();
+    voxels.sort_unstable_by_key(|v| v.0);
+    voxels.into_iter().map(|v| v.1).collect()
 }
 
 /// The form parts are compared in: each channel's cumulative sums, scaled
@@ -333,6 +365,23 @@ mod tests {
         assert_eq!(super::super::polar::built(), before);
         PartKind::Ring.describe(&pts);
         assert_eq!(super::super::polar::built(), before + 1);
+    }
+
+    /// The lowest point of each voxel, whatever the order: reversing the
+    /// points keeps the sample bit for bit (the first point seen did not).
+    #[test]
+    fn voxel_lowest_does_not_depend_on_the_order() {
+        let pts = vec![
+            [0.05, 0.05, 0.07],
+            [0.02, 0.01, 0.03],
+            [0.5, 0.5, 0.5],
+            [0.04, 0.08, 0.03],
+        ];
+        let mut rev = pts.clone();
+        rev.reverse();
+        let a = voxel_lowest(&pts, 0.1);
+        assert_eq!(a, voxel_lowest(&rev, 0.1));
+        assert_eq!(a, vec![[0.02, 0.01, 0.03], [0.5, 0.5, 0.5]]);
     }
 
     /// The whole mass at opposite ends is the largest distance: 1.
