@@ -145,15 +145,20 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     };
     let walls: Vec<f32> = pts.iter().map(|p| p[0].hypot(p[1]) as f32).collect();
     let area = slice::features(pts).area.max(1.0);
+    let mut heights: Vec<f32> = voxel_lowest(points, 0.1)
+        .into_iter()
+        .filter_map(|p| {
+            let (r, h) = (p[0].hypot(p[1]), p[2] - floor);
+            let wall = walls[sector_of(&p, slice::SECTORS)];
+            let out = r < 0.3 || r > 0.9 * wall - 0.2 || h < 0.1 || p[2] > ceiling - 0.2;
+            (!out).then_some(h)
+        })
+        .collect();
+    // Summed in sorted order: the same bits whatever the points' order.
+    heights.sort_unstable_by(f32::total_cmp);
+    let inside = heights.len();
     let mut profile = vec![0f32; PROFILE_BINS];
-    let mut inside = 0usize;
-    for p in voxel_lowest(points, 0.1) {
-        let (r, h) = (p[0].hypot(p[1]), p[2] - floor);
-        let wall = walls[sector_of(&p, slice::SECTORS)];
-        if r < 0.3 || r > 0.9 * wall - 0.2 || h < 0.1 || p[2] > ceiling - 0.2 {
-            continue;
-        }
-        inside += 1;
+    for h in heights {
         soft_bin(
             &mut profile,
             h as f64 / PROFILE_TOP * (PROFILE_BINS - 1) as f64,

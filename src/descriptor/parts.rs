@@ -250,9 +250,10 @@ pub fn voxel_sample(points: &[[f32; 3]], size: f32) -> Vec<[f32; 3]> {
 
 /// One point per occupied voxel of edge `size`, finite points only: the
 /// lowest of the voxel's points (least by z, then x, then y, in
-/// `f32::total_cmp`), listed in the order of the voxels' keys. Neither the
-/// points kept nor their order depend on the order of `points`, so a part
-/// summed over them is the same bit for bit for any order of a scan.
+/// `f32::total_cmp`). Which points are kept does not depend on the order
+/// of `points`; the order of the list does (it is a hash map's), so a
+/// part summing floats over them sorts what it sums first (sorting every
+/// voxel by key cost the clutter part 1.8x on a 100k-point outdoor scan).
 pub fn voxel_lowest(points: &[[f32; 3]], size: f32) -> Vec<[f32; 3]> {
     let inv = 1.0 / size;
     let below = |a: &[f32; 3], b: &[f32; 3]| {
@@ -273,9 +274,7 @@ pub fn voxel_lowest(points: &[[f32; 3]], size: f32) -> Vec<[f32; 3]> {
             })
             .or_insert(*p);
     }
-    let mut voxels: Vec<([i32; 3], [f32; 3])> = lowest.into_iter().collect();
-    voxels.sort_unstable_by_key(|v| v.0);
-    voxels.into_iter().map(|v| v.1).collect()
+    lowest.into_values().collect()
 }
 
 /// The form parts are compared in: each channel's cumulative sums, scaled
@@ -368,7 +367,7 @@ mod tests {
     }
 
     /// The lowest point of each voxel, whatever the order: reversing the
-    /// points keeps the sample bit for bit (the first point seen did not).
+    /// points keeps the same points (the first point seen did not).
     #[test]
     fn voxel_lowest_does_not_depend_on_the_order() {
         let pts = vec![
@@ -379,8 +378,12 @@ mod tests {
         ];
         let mut rev = pts.clone();
         rev.reverse();
-        let a = voxel_lowest(&pts, 0.1);
-        assert_eq!(a, voxel_lowest(&rev, 0.1));
+        let sorted = |mut v: Vec<[f32; 3]>| {
+            v.sort_by(|a, b| a[2].total_cmp(&b[2]));
+            v
+        };
+        let a = sorted(voxel_lowest(&pts, 0.1));
+        assert_eq!(a, sorted(voxel_lowest(&rev, 0.1)));
         assert_eq!(a, vec![[0.02, 0.01, 0.03], [0.5, 0.5, 0.5]]);
     }
 
