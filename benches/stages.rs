@@ -206,9 +206,10 @@ fn describe_parts(c: &mut Criterion) {
                 b.iter(|| kind.describe(black_box(x)).len())
             });
         }
-        // indoor_clutter's four parts: each computing the points' ranges,
-        // azimuths and free-space polygon itself (as before
-        // descriptor::polar), and sharing them (as `describe` does now).
+        // indoor_clutter's four parts: each on its own (slice, ring and
+        // clutter each build their own PolarScan and polygon; esf none),
+        // and sharing one (as `describe` does). The code before the
+        // sharing (20288a1) is measured by its own bench; docs/parts.md.
         let kinds: Vec<PartKind> = DescriptorParams::indoor_clutter()
             .parts
             .iter()

@@ -164,17 +164,12 @@ pub fn describe(points: &[[f32; 3]], params: &DescriptorParams) -> Result<Descri
         cols: params.cols(),
         matrices,
         summary,
-        parts: if params.parts.is_empty() {
-            Vec::new()
-        } else {
-            let scan = polar::PolarScan::new(points);
-            params
-                .parts
+        parts: {
+            let kinds: Vec<PartKind> = params.parts.iter().map(|p| p.kind).collect();
+            kinds
                 .iter()
-                .map(|p| PartValues {
-                    kind: p.kind,
-                    values: p.kind.describe_scan(&scan),
-                })
+                .zip(parts::describe_parts(points, &kinds))
+                .map(|(&kind, values)| PartValues { kind, values })
                 .collect()
         },
     })

@@ -469,7 +469,7 @@ mod tests {
     /// The preset table is the one list: each entry makes parameters that
     /// carry its name, and the JS `Preset` type and the README's
     /// `describe` synopsis (written out, as TypeScript and Markdown must
-    /// be) name exactly these.
+    /// be) name exactly these; the page's menu carries each note.
     #[test]
     fn every_list_of_presets_is_the_table() {
         let names = preset_names();
@@ -484,6 +484,12 @@ mod tests {
         assert!(include_str!("../../README.md").contains(&md), "{md}");
         let noted: Vec<&str> = PRESET_NOTES.iter().map(|(n, _)| *n).collect();
         assert_eq!(noted, names);
+        // The page's preset menu shows each note as its option's title.
+        let page = include_str!("../../www/index.html");
+        for (name, note) in PRESET_NOTES {
+            let option = format!("<option value=\"{name}\" title=\"{note}\">");
+            assert!(page.contains(&option), "www/index.html lacks {option}");
+        }
         let e = DescriptorParams::preset("attic").unwrap_err().to_string();
         assert!(e.contains(&names.join(", ")), "{e}");
     }

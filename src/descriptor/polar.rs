@@ -25,6 +25,8 @@ pub struct PolarScan<'a> {
 impl<'a> PolarScan<'a> {
     /// Ranges and azimuths of every point.
     pub fn new(points: &'a [[f32; 3]]) -> Self {
+        #[cfg(test)]
+        BUILT.with(|b| b.set(b.get() + 1));
         PolarScan {
             points,
             range: points.iter().map(|p| p[0].hypot(p[1])).collect(),
@@ -46,6 +48,7 @@ impl<'a> PolarScan<'a> {
     /// point `i`: [`sector_of`](super::parts::sector_of) of the point.
     #[inline]
     pub fn sector(&self, i: usize, sectors: usize) -> usize {
+        debug_assert!(sectors > 0, "no sectors");
         ((self.angle[i] / std::f32::consts::TAU * sectors as f32) as usize).min(sectors - 1)
     }
 
@@ -55,4 +58,17 @@ impl<'a> PolarScan<'a> {
             .get_or_init(|| slice::sector_points_of(self))
             .as_deref()
     }
+}
+
+#[cfg(test)]
+thread_local! {
+    /// How many [`PolarScan`]s this thread built (tests check that parts
+    /// which do not read them do not pay for one).
+    static BUILT: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+/// [`PolarScan`]s built so far by this thread.
+#[cfg(test)]
+pub(crate) fn built() -> usize {
+    BUILT.with(|b| b.get())
 }

@@ -372,8 +372,17 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
 /// azimuths were shared between parts (`descriptor::polar`): an FNV-1a
 /// digest of each part's values (f32 bits) on the real files and on
 /// simulated office and school scans, recorded by the code of commit
-/// 20288a1 in tests/fixtures/parts_digests.json. With
-/// PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
+/// 20288a1 in tests/fixtures/parts_digests.json; the clutter part's
+/// digests were recorded again when its voxel sample became the lowest
+/// point of each voxel instead of the first seen (order-independent).
+/// With PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
+///
+/// The digests pin exact f32 bits, and so the platform's `f32::hypot`,
+/// `f32::atan2` and `f64::acos` (std calls the C library's libm): the
+/// fixture was recorded on x86-64 Linux (glibc); another libm (macOS,
+/// musl, wasm32's) may differ in the last bit of an azimuth or a range
+/// and fail this test without any change to placecat. Re-record there
+/// rather than loosen it.
 #[test]
 fn parts_are_bit_identical_to_before_the_shared_polar_scan() {
     use placecat::io::{read_scan, ReadLimits};
