@@ -157,6 +157,49 @@ const PALETTE: [&str; 8] = [
     "#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948", "#b07aa1", "#ff9da7",
 ];
 
+/// A label strip along the sequence (paper Fig. 4 and 6): truth above,
+/// clusters (mapped to classes) below.
+pub fn strip_svg(truth: &[String], e: &Evaluation, labels: &[i32]) -> String {
+    let classes = &e.confusion.rows;
+    let n = truth.len();
+    let w = 4.0;
+    let mut s = format!(
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{}" height="110" font-family="sans-serif" font-size="11">"#,
+        n as f64 * w + 90.0
+    );
+    let color = |name: Option<&str>| {
+        name.and_then(|nm| classes.iter().position(|c| c == nm))
+            .map_or("#999999", |i| PALETTE[i % 8])
+    };
+    s += r#"<text x="0" y="22">truth</text><text x="0" y="52">clusters</text>"#;
+    for i in 0..n {
+        let x = 80.0 + i as f64 * w;
+        s += &format!(
+            r#"<rect x="{x}" y="10" width="{w}" height="18" fill="{}"/>"#,
+            color(Some(&truth[i]))
+        );
+        let mapped = e
+            .confusion
+            .cluster_class
+            .iter()
+            .find(|(k, _)| *k == labels[i])
+            .and_then(|(_, c)| c.as_deref());
+        s += &format!(
+            r#"<rect x="{x}" y="40" width="{w}" height="18" fill="{}"/>"#,
+            color(mapped)
+        );
+    }
+    for (i, c) in classes.iter().enumerate() {
+        let x = 80.0 + i as f64 * 120.0;
+        s += &format!(
+            r#"<rect x="{x}" y="75" width="12" height="12" fill="{}"/><text x="{}" y="85">{c}</text>"#,
+            PALETTE[i % 8],
+            x + 16.0
+        );
+    }
+    s + "</svg>"
+}
+
 /// The site top-down (like the paper's Fig. 1a): what stands there in grey
 /// (tree crowns and trunks as dots, boxes as outlines), the route as one
 /// dot per scan, filled with the kind k-means put it in (mapped to the
