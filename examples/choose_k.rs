@@ -8,7 +8,11 @@
 //! `--seeds test`: 101 to 105, indoor also 11 to 20 (run once, to report;
 //! docs/seeds.md). `--seeds round2`: the outdoor site as changed in issue
 //! 14's second round, each seed on its own row: development seeds 1 to 3
-//! and the second round's test seeds 201 to 205 (run once); no real files. Clustering seeds 0..9. Indoor: N scans per kind (default
+//! and the second round's test seeds 201 to 205 (run once); no real files.
+//! `--seeds round3`: the third round's, the outdoor site and the warehouse
+//! under the `warehouse` preset (the page's demo): development seeds 1 to
+//! 10 and test seeds 401 to 405 (run once; `--dev-only` leaves them out).
+//! Clustering seeds 0..9. Indoor: N scans per kind (default
 //! 10, two rooms of five); warehouse and outdoor: `--scans` along the
 //! trajectory (default: the simulator's own count). Writes a markdown
 //! table to stdout and, given a path, to that file.
@@ -268,19 +272,16 @@ fn real_sets() -> Vec<Set> {
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let mut test = false;
-    let mut round2 = false;
+    let mut which: Option<String> = None;
+    let mut dev_only = false;
     let mut per_kind = 10;
     let mut scans: Option<usize> = None;
     let mut path = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
-            "--seeds" => {
-                let which = it.next().map(String::as_str);
-                test = which == Some("test");
-                round2 = which == Some("round2");
-            }
+            "--seeds" => which = it.next().cloned(),
+            "--dev-only" => dev_only = true,
             "--indoor-per-kind" => {
                 per_kind = it.next().and_then(|s| s.parse().ok()).expect("a number")
             }
@@ -288,6 +289,7 @@ fn main() {
             p => path = Some(p.to_string()),
         }
     }
+    let test = which.as_deref() == Some("test");
     let (sim_seeds, indoor_extra): (Vec<u64>, Vec<u64>) = if test {
         ((101..=105).collect(), (11..=20).collect())
     } else {
@@ -295,8 +297,34 @@ fn main() {
     };
     let clustering: Vec<u64> = (0..10).collect();
     let start = std::time::Instant::now();
-    if round2 {
-        return round_two(&clustering, scans, path, start);
+    let later = match which.as_deref() {
+        Some("round2") => Some(Round {
+            title: "the outdoor site of issue 14's second round",
+            dev: (1..=3).collect(),
+            test: (201..=205).collect(),
+            scenes: vec![("outdoor", SceneKind::Outdoor, DescriptorParams::outdoor())],
+        }),
+        Some("round3") => Some(Round {
+            title: "the outdoor site and the warehouse demo of issue 14's third round",
+            dev: (1..=10).collect(),
+            test: if dev_only {
+                vec![]
+            } else {
+                (401..=405).collect()
+            },
+            scenes: vec![
+                ("outdoor", SceneKind::Outdoor, DescriptorParams::outdoor()),
+                (
+                    "warehouse, preset warehouse",
+                    SceneKind::Warehouse,
+                    DescriptorParams::warehouse(),
+                ),
+            ],
+        }),
+        _ => None,
+    };
+    if let Some(r) = later {
+        return round(r, &clustering, scans, path, start);
     }
     let mut sets = Vec::new();
     for (label, scene, buildings, preset) in [
@@ -367,31 +395,49 @@ fn main() {
     }
 }
 
-/// `--seeds round2`: the changed outdoor site, one row per seed.
-fn round_two(
+/// A later round of the outdoor site (and, from the third, the warehouse
+/// under the `warehouse` preset, as the page's demo describes it), one row
+/// per seed: its development seeds, then its test seeds (none with
+/// `--dev-only`).
+struct Round {
+    title: &'static str,
+    dev: Vec<u64>,
+    test: Vec<u64>,
+    scenes: Vec<(&'static str, SceneKind, DescriptorParams)>,
+}
+
+fn round(
+    r: Round,
     clustering: &[u64],
     scans: Option<usize>,
     path: Option<String>,
     start: std::time::Instant,
 ) {
     let mut sets = Vec::new();
-    for (group, seeds) in [("development", 1..=3), ("test", 201..=205)] {
-        for seed in seeds {
-            let mut sp = SimParams::new(SceneKind::Outdoor, seed);
-            if let Some(n) = scans {
-                sp.scans = n;
+    for (label, scene, params) in &r.scenes {
+        for (group, seeds) in [("development", &r.dev), ("test", &r.test)] {
+            for &seed in seeds {
+                let mut sp = SimParams::new(*scene, seed);
+                if let Some(n) = scans {
+                    sp.scans = n;
+                }
+                eprintln!(
+                    "{label} seed {seed} ({:.0} s)",
+                    start.elapsed().as_secs_f64()
+                );
+                let name = format!("{label}, {group} seed {seed}");
+                sets.push(simulate(name, sp, params.clone()));
             }
-            eprintln!(
-                "outdoor seed {seed} ({:.0} s)",
-                start.elapsed().as_secs_f64()
-            );
-            let name = format!("outdoor, {group} seed {seed}");
-            sets.push(simulate(name, sp, DescriptorParams::outdoor()));
         }
     }
+    let seeds = |v: &[u64]| match v {
+        [] => "none".to_string(),
+        [a] => a.to_string(),
+        [a, .., b] => format!("{a} to {b}"),
+    };
     let mut out = String::new();
-    writeln!(out, "## Choosing the number of categories: the outdoor site of issue 14's second round\n\nSimulator seeds 1 to 3 (development) and 201 to 205 (test, run once), one row per seed; clustering seeds 0 to 9 (tree: hierarchical k-means++ cut with `cut_k`; k-means: plusplus seeding). \"found\": the K chosen is 3 or 2 (plain vs forest). Accuracy and ARI at the K chosen (`eval::evaluate`).").unwrap();
-    table(&mut out, "Outdoor site (second round)", &sets, clustering);
+    writeln!(out, "## Choosing the number of categories: {}\n\nSimulator seeds {} (development) and {} (test, run once), one row per seed; clustering seeds 0 to 9 (tree: hierarchical k-means++ cut with `cut_k`; k-means: plusplus seeding). \"found\": the K chosen is 3 or 2 (outdoor: plain vs forest; warehouse: halls vs airlock). Accuracy and ARI at the K chosen (`eval::evaluate`).", r.title, seeds(&r.dev), seeds(&r.test)).unwrap();
+    table(&mut out, r.title, &sets, clustering);
     writeln!(out, "\n(took {:.0} s)", start.elapsed().as_secs_f64()).unwrap();
     print!("{out}");
     if let Some(p) = path {

@@ -4,14 +4,14 @@
 //! to a stretch of another kind), which kind covers most of its 20 m range
 //! disc, and what k-means and nearest neighbour say.
 //!
-//!     cargo run --release --example site_errors -- [seed ...]   (default: 1 2 3)
+//!     cargo run --release --example site_errors -- [seed ...]   (default: 1 to 10)
 //!     cargo run --release --example site_errors -- warehouse [seed ...]
 //!
 //! The second form: how far apart the warehouse's kinds are under Delta
 //! (mean silhouette of the true labels, of halls vs airlock, and of
 //! k-means' own labels; mean Delta within and between kinds).
 //!
-//! Development seeds only (docs/seeds.md).
+//! Development seeds only (docs/seeds.md; the outdoor site's: 1 to 10).
 
 // Only run_site is used here.
 #[allow(dead_code)]
@@ -116,6 +116,58 @@ fn mean_deltas(m: &DistanceMatrix, truth: &[String], kinds: &[&str]) {
     }
 }
 
+/// The hierarchical k-means++ tree (seed 0, as the page) cut at 2 to 4
+/// categories along the route, one character a scan, under the true kinds'
+/// initials; and, at 3, each category's true kinds, mean distance to a
+/// stretch of another kind and mean disc shares: what the tree's splits
+/// follow.
+fn tree_summary(space: &Space, m: &DistanceMatrix, rows: &[Row]) {
+    use placecat::cluster::hkmeans::HkMeansParams;
+    use placecat::cluster::HierarchicalKMeans;
+    let tree = HierarchicalKMeans::fit(space, m, &HkMeansParams::new(0)).unwrap();
+    let initial = |t: &str| match t {
+        "open_plain" => 'o',
+        "forest_road" => 'r',
+        _ => 'p',
+    };
+    let truth: String = rows.iter().map(|r| initial(&r.truth)).collect();
+    println!("  tree seed 0 along the route (o: open plain, r: forest road, p: forest path)");
+    println!("  truth {truth}");
+    for k in 2..=4 {
+        let labels = tree.cut_k(k).unwrap().labels;
+        let line: String = labels.iter().map(|l| l.to_string()).collect();
+        println!("  K={k}   {line}");
+        if k != 3 {
+            continue;
+        }
+        let mut cats: Vec<i32> = labels.clone();
+        cats.sort_unstable();
+        cats.dedup();
+        for c in cats {
+            let sel: Vec<&Row> = rows
+                .iter()
+                .zip(&labels)
+                .filter(|(_, l)| **l == c)
+                .map(|(r, _)| r)
+                .collect();
+            let n = sel.len() as f64;
+            let count = |k: &str| sel.iter().filter(|r| r.truth == k).count();
+            let share = |j: usize| sel.iter().map(|r| r.shares[j]).sum::<f64>() / n;
+            println!(
+                "    category {c}: {} scans (plain {} road {} path {}), mean d_other {:.1} m, disc {:.2}/{:.2}/{:.2}",
+                sel.len(),
+                count(OUTDOOR_KINDS[0]),
+                count(OUTDOOR_KINDS[1]),
+                count(OUTDOOR_KINDS[2]),
+                sel.iter().map(|r| r.d_other).sum::<f64>() / n,
+                share(0),
+                share(1),
+                share(2)
+            );
+        }
+    }
+}
+
 fn warehouse(seeds: &[u64]) {
     use placecat::sim::sites::WAREHOUSE_KINDS;
     for &seed in seeds {
@@ -168,7 +220,7 @@ fn main() {
     }
     let seeds: Vec<u64> = args.iter().map(|s| s.parse().expect("a seed")).collect();
     let seeds = if seeds.is_empty() {
-        vec![1, 2, 3]
+        (1..=10).collect()
     } else {
         seeds
     };
@@ -265,6 +317,18 @@ fn main() {
                 r.shares[0], r.shares[1], r.shares[2], r.nn
             );
         }
+        // Error rate near a change of true kind along the route (5 scans,
+        // about 14 m: well inside the 20 m range, the scan sees both
+        // places) and away from one.
+        let near = |r: &Row| r.since.min(until[r.i]) <= 5;
+        for (name, sel) in [
+            ("within 5 scans of a change", true),
+            ("further from a change", false),
+        ] {
+            let rows: Vec<&Row> = rows.iter().filter(|r| near(r) == sel).collect();
+            let wrong = rows.iter().filter(|r| r.truth != r.predicted).count();
+            println!("  {name:24} {wrong:3} wrong of {:3}", rows.len());
+        }
         // Error rate by distance to a stretch of another kind, and by turn.
         type Group = (&'static str, fn(&Row) -> bool);
         let groups: [Group; 5] = [
@@ -279,6 +343,7 @@ fn main() {
             let wrong = sel.iter().filter(|r| r.truth != r.predicted).count();
             println!("  {name:24} {wrong:3} wrong of {:3}", sel.len());
         }
+        tree_summary(&space, &m, &rows);
         let nn_ok = rows.iter().filter(|r| r.truth == r.nn).count();
         println!(
             "  1-NN (>25 scans away) {:.1} %",

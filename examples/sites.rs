@@ -1,12 +1,13 @@
 //! The sequence sites' seed table alone (a part of docs/experiments.md,
-//! section 4, without the rest of the report): for the development seeds
-//! 1-3 and the test seeds fixed in docs/seeds.md (outdoor: 201-205, the
-//! second round's; warehouse: 101-105),
+//! section 4, without the rest of the report): for the development and
+//! test seeds fixed in docs/seeds.md (outdoor: 1-10 and 401-405, the third
+//! round's; warehouse: 1-3 and 101-105),
 //! `placecat simulate --scene outdoor|warehouse --seed S`, described with
 //! the `outdoor` / `indoor` preset, clustered into 3 by deterministic
 //! k-means and by hierarchical k-means++ (clustering seeds 0-9). Also the
-//! time to simulate, and the site maps (docs/outdoor_map.svg,
-//! docs/warehouse_map.svg, from seed 1).
+//! time to simulate, and the site maps and label strips
+//! (docs/outdoor_map.svg, docs/outdoor_strip.svg and the warehouse's, from
+//! seed 1).
 //!
 //!     cargo run --release --example sites -- [outdoor|warehouse|both] [dev]
 //!
@@ -47,6 +48,11 @@ fn main() {
         std::fs::write(
             docs.join(format!("{name}_map.svg")),
             sites::map_svg(run, &kinds),
+        )
+        .unwrap();
+        std::fs::write(
+            docs.join(format!("{name}_strip.svg")),
+            sites::strip_svg(&run.truth, &run.stride, &run.stride_labels),
         )
         .unwrap();
         println!("({:.0} s)", t.elapsed().as_secs_f64());

@@ -109,8 +109,33 @@ impl Species {
     }
 }
 
-/// A tree: trunk into the ground and its crown.
-fn tree(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64, species: Species) {
+/// Half the width kept clear along the route from the ground to above the
+/// vehicle's roof (m): a vehicle 1.5-1.8 m wide (track) with its body. A
+/// forest path a vehicle drives is open to its width and height: branches
+/// that reach in are cut back or broken off by the traffic.
+const CORRIDOR: f64 = 1.0;
+/// Height above the ground up to which the corridor is clear (m): the
+/// sensor rides at 1.6-1.95 m.
+const CORRIDOR_HEIGHT: f64 = 2.5;
+
+/// How far a crown at p may reach before it enters the vehicle's corridor
+/// (infinite away from the route).
+fn crown_reach(route: &Route, p: [f64; 2]) -> f64 {
+    route
+        .distance(p, CORRIDOR + 3.0, &[])
+        .map_or(f64::INFINITY, |d| (d - CORRIDOR).max(0.0))
+}
+
+/// A tree: trunk into the ground and its crown; branches below
+/// CORRIDOR_HEIGHT reach at most `reach` from the trunk.
+fn tree(
+    out: &mut Vec<Shape>,
+    r: &mut ChaCha8Rng,
+    p: [f64; 2],
+    ground: f64,
+    species: Species,
+    reach: f64,
+) {
     let (h, trunk) = match species {
         Species::Broadleaf => (u(r, 7.0, 16.0), u(r, 0.15, 0.45)),
         _ => (u(r, 10.0, 22.0), u(r, 0.1, 0.25)),
@@ -143,28 +168,47 @@ fn tree(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64, spec
                 radius: 0.7 * cr,
             });
         }
-        Species::Spruce => spruce_crown(out, p, ground, u(r, 0.3, 2.0), h, u(r, 1.3, 2.3)),
+        Species::Spruce => spruce_crown(out, p, ground, u(r, 0.3, 2.0), h, u(r, 1.3, 2.3), reach),
     }
 }
 
 /// A spruce's cone of branches from `base` above the ground to the top
 /// `h`, `radius` wide at the bottom: spheres stacked up the cone, each as
-/// wide as the cone at its centre.
-fn spruce_crown(out: &mut Vec<Shape>, p: [f64; 2], ground: f64, base: f64, h: f64, radius: f64) {
+/// wide as the cone at its centre; the spheres that come down into the
+/// vehicle's corridor height reach at most `reach` (the branches there cut
+/// back; a simplification: all round the trunk, not only on the route's
+/// side).
+fn spruce_crown(
+    out: &mut Vec<Shape>,
+    p: [f64; 2],
+    ground: f64,
+    base: f64,
+    h: f64,
+    radius: f64,
+    reach: f64,
+) {
     let width = |z: f64| radius * (h - z) / (h - base);
     let mut z = base + 0.8 * radius;
     while z < h && width(z) > 0.2 {
         let rad = width(z);
-        out.push(Shape::Sphere {
-            centre: [p[0], p[1], ground + z],
-            radius: rad,
-        });
+        let kept = if z - rad < CORRIDOR_HEIGHT {
+            rad.min(reach)
+        } else {
+            rad
+        };
+        if kept > 0.05 {
+            out.push(Shape::Sphere {
+                centre: [p[0], p[1], ground + z],
+                radius: kept,
+            });
+        }
         z += rad.max(0.5);
     }
 }
 
-/// A young spruce of the understorey, 1-4 m: branches to the ground.
-fn sapling(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64) {
+/// A young spruce of the understorey, 1-4 m: branches to the ground (at
+/// most `reach` from its stem).
+fn sapling(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64, reach: f64) {
     let h = u(r, 1.0, 4.0);
     out.push(Shape::Cylinder {
         centre: p,
@@ -172,7 +216,7 @@ fn sapling(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], ground: f64) {
         z0: ground - 0.2,
         z1: ground + h,
     });
-    spruce_crown(out, p, ground, 0.1, h, u(r, 0.25, 0.2 + 0.25 * h));
+    spruce_crown(out, p, ground, 0.1, h, u(r, 0.25, 0.2 + 0.25 * h), reach);
 }
 
 /// A low sphere half in the ground (bush, boulder, heap).
@@ -327,7 +371,7 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     for _ in 0..r.random_range(4..=10) {
         let p = field_point(r, 4.0);
         if clear(p, 5.0) {
-            tree(&mut s, r, p, gz(p), Species::Broadleaf);
+            tree(&mut s, r, p, gz(p), Species::Broadleaf, f64::INFINITY);
         }
     }
     for _ in 0..r.random_range(15..=35) {
@@ -436,7 +480,7 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
         let p = [u(r, lo[0], hi[0]), u(r, lo[1], hi[1])];
         let species = Species::draw(r);
         if forest(p, road_clear, path_clear) {
-            tree(&mut s, r, p, gz(p), species);
+            tree(&mut s, r, p, gz(p), species, crown_reach(&route, p));
         }
     }
     // Undergrowth, boulders and saplings; thicker along the path, where
@@ -452,7 +496,7 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
     for _ in 0..(area * saplings) as usize {
         let p = [u(r, lo[0], hi[0]), u(r, lo[1], hi[1])];
         if forest(p, road_clear - 0.5, path_clear + 0.3) {
-            sapling(&mut s, r, p, gz(p));
+            sapling(&mut s, r, p, gz(p), crown_reach(&route, p));
         }
     }
     let on = |kind: &str| -> Vec<usize> {

@@ -56,15 +56,18 @@ test('the outdoor demo, no click but its button: a site of 300 scans, the catego
   assert.match(await text('#cluster-status'), /^3 categories from 300 scans$/);
   assert.equal(await h.page.$$eval('#legend li', (li) => li.length), 3);
   // Accuracy at these three categories. Issue 14 asks for at least 97 %;
-  // not met: the page shows 96.3 % (ARI 0.898), as docs/experiments.md
-  // section 4 measures natively on seed 1 (96.4 +- 0.1 % over 10 tree
-  // seeds; second-round test seeds 201-205: 91.8-96.1 %). The errors are
-  // path scans within sight of the road junction or the field. The floors
-  // are the measured figure, to catch a regression.
+  // not met by 1 scan of 300: the page shows 96.7 % (ARI 0.906), the CLI's
+  // figure for what the page does (`placecat cluster --method hkmeans
+  // --categories auto --seed 0` on `simulate --scene outdoor --seed 1`,
+  // described with `outdoor`; before the third round's site, 96.3 % on
+  // both). docs/experiments.md section 4 gives stride k-means and the mean
+  // over tree seeds 0-9 on the same seed. The errors are scans within about
+  // 14 m of a change of place (the road junction, the field's edge). The
+  // floors are a little below the measured figure, to catch a regression.
   const ev = await evaluation();
   t.diagnostic(`outdoor demo at 3 categories: accuracy ${ev.accuracy}, ARI ${ev.ari}; ${await text('#progress-text')}`);
-  assert.ok(ev.accuracy >= 0.96, `accuracy ${ev.accuracy} at 3 categories`);
-  assert.ok(ev.ari >= 0.89, `ARI ${ev.ari}`);
+  assert.ok(ev.accuracy >= 0.965, `accuracy ${ev.accuracy} at 3 categories`);
+  assert.ok(ev.ari >= 0.9, `ARI ${ev.ari}`);
   // The map is a site, not a line: the scans' points spread both ways (the
   // old strip's would be about 60 m across 350 m: a ratio near 0.17).
   const site = await siteOnMap();
@@ -108,7 +111,12 @@ test('the warehouse demo: 300 scans of an AGV route, described with the indoor p
   await afterRun(h.page, () => h.page.click('#demo-warehouse'), 300000);
   assert.match(await text('#progress-text'), /^300 \/ 300 scans/);
   // The demo keeps the paper's indoor preset, as the paper's ArlaWarehouse
-  // (the `warehouse` preset of docs/parts.md is the user's choice).
+  // (the `warehouse` preset of docs/parts.md is the user's choice). Issue
+  // 14's third round tried the demo under `warehouse` on development seeds
+  // 1-10: the rule then finds 3 or 2 categories for 24 of 100 tree seeds
+  // and mostly 4-6 (the large hall's main aisle and rack aisles apart;
+  // seed 1, tree seed 0: 4, accuracy 98.0 % by majority names, ARI 0.46),
+  // so the demo stays on indoor (docs/experiments.md section 4).
   assert.equal(await h.page.inputValue('#preset'), 'indoor');
   assert.match(await text('#preset-note'), /^indoor suggested: \d+ % of the points of scan_00000\.ply lie beyond 15 m \(under 14 %/);
   assert.match(await text('#map-caption'), /^Trajectory map/);

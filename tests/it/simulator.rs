@@ -265,3 +265,47 @@ fn the_simulate_command_writes_the_outdoor_route_with_its_poses_and_labels() {
     assert!(sim.len() >= 300);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn no_branch_reaches_into_the_vehicles_corridor_at_the_sensors_height() {
+    // Before: spruces 1.1-1.6 m from the path's centre line had cones
+    // 1.3-2.3 m wide at the base, so the sensor could stand inside one
+    // (seed 6, scan 160: 49 % of its points within 1.5 m of the sensor).
+    // Now no crown comes within 1 m of the route's centre line between 1 m
+    // (above boulders, bushes and heaps) and 2 m (the sensor rides at
+    // 1.6-1.95 m) above the ground.
+    use placecat::sim::geometry::Shape;
+    for seed in 1..=10 {
+        let site = placecat::sim::sites::outdoor(&mut placecat::rng::rng(seed));
+        let ground = site.ground.as_ref().expect("outdoor ground");
+        let mut near_route = 0;
+        for shape in &site.shapes {
+            let Shape::Sphere { centre, radius } = *shape else {
+                continue;
+            };
+            let Some(d) = site
+                .route
+                .distance([centre[0], centre[1]], radius + 1.0, &[])
+            else {
+                continue;
+            };
+            near_route += 1;
+            // The sphere's extent over the corridor point nearest to its centre.
+            let e = (d - 1.0).max(0.0);
+            if e >= radius {
+                continue;
+            }
+            let half = (radius * radius - e * e).sqrt();
+            let g = ground.height(centre[0], centre[1]);
+            let (lo, hi) = (centre[2] - half - g, centre[2] + half - g);
+            assert!(
+                hi < 1.0 || lo > 2.0,
+                "seed {seed}: a crown of radius {radius:.2} m {d:.2} m from the route spans {lo:.2}-{hi:.2} m over the corridor"
+            );
+        }
+        assert!(
+            near_route > 20,
+            "seed {seed}: {near_route} spheres near the route"
+        );
+    }
+}
