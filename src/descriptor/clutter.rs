@@ -108,26 +108,41 @@ pub fn level_shares(points: &[[f32; 3]], walls: &[f32], floor: f32, level: f32) 
 }
 
 fn level_shares_of(scan: &PolarScan, walls: &[f32], floor: f32, level: f32) -> Vec<f32> {
+    let [shares] = levels_shares_of(scan, walls, floor, [level]);
+    shares
+}
+
+/// [`level_shares`] at each of `levels`, in one pass over the points.
+fn levels_shares_of<const L: usize>(
+    scan: &PolarScan,
+    walls: &[f32],
+    floor: f32,
+    levels: [f32; L],
+) -> [Vec<f32>; L] {
     let sectors = walls.len();
     if sectors == 0 {
-        return Vec::new();
+        return std::array::from_fn(|_| Vec::new());
     }
-    let mut near = vec![f32::INFINITY; sectors];
+    let mut near = [(); L].map(|_| vec![f32::INFINITY; sectors]);
     for (i, p) in scan.points.iter().enumerate() {
-        if !is_finite(p) || (p[2] - floor - level).abs() > BAND {
+        if !is_finite(p) || scan.range(i) < 0.3 {
             continue;
         }
-        let r = scan.range(i);
-        if r < 0.3 {
+        let bands: [bool; L] = levels.map(|level| (p[2] - floor - level).abs() <= BAND);
+        if !bands.contains(&true) {
             continue;
         }
-        let s = scan.sector(i, sectors);
-        near[s] = near[s].min(r);
+        let (r, s) = (scan.range(i), scan.sector(i, sectors));
+        for (near, _) in near.iter_mut().zip(bands).filter(|(_, b)| *b) {
+            near[s] = near[s].min(r);
+        }
     }
-    near.iter()
-        .zip(walls)
-        .map(|(&n, &w)| if w > 0.0 { (n / w).min(1.0) } else { 1.0 })
-        .collect()
+    near.map(|near| {
+        near.iter()
+            .zip(walls)
+            .map(|(&n, &w)| if w > 0.0 { (n / w).min(1.0) } else { 1.0 })
+            .collect()
+    })
 }
 
 /// The channels (see the module doc); a scan with no return beyond 0.3 m,
@@ -173,8 +188,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
         0.0,
         2.5,
     ));
-    for level in LEVELS {
-        let shares = level_shares_of(scan, &walls, floor, level);
+    for shares in levels_shares_of(scan, &walls, floor, LEVELS) {
         let mut h = vec![0f32; BINS];
         for &s in &shares {
             soft_bin(&mut h, s as f64 * (BINS - 1) as f64, 1.0);

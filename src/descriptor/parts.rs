@@ -73,12 +73,6 @@ impl PartKind {
         false
     }
 
-    /// Whether the part reads the points' ranges and azimuths
-    /// ([`PolarScan`]): `height_range` and `esf` do not.
-    pub fn needs_polar(self) -> bool {
-        matches!(self, PartKind::Slice | PartKind::Ring | PartKind::Clutter)
-    }
-
     /// Compute the part from a scan's points (sensor frame, z up).
     pub fn describe(self, points: &[[f32; 3]]) -> Vec<f32> {
         describe_parts(points, &[self]).pop().unwrap_or_default()

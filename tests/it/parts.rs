@@ -430,6 +430,7 @@ fn parts_are_bit_identical_to_before_the_shared_polar_scan() {
     let want: BTreeMap<String, String> =
         serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     assert_eq!(want.len(), PartKind::ALL.len() * (18 + 10));
+    assert_eq!(got.len(), want.len());
     let differ: Vec<&String> = want
         .keys()
         .filter(|k| got.get(*k) != want.get(*k))
