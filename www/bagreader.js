@@ -3,8 +3,8 @@
 // each kept cloud is described and posted as it comes, so progress moves
 // and memory holds one cloud (and one chunk of the bag) at a time. Like
 // engine.js, every wasm object made here is freed here.
-import { scoped } from './engine.js';
-import { rangeShare, siteSubsample, suggestPreset } from './suggest.js';
+import { scanResult, scoped } from './engine.js';
+import { rangeShare, suggestPreset } from './suggest.js';
 
 /** @typedef {typeof import('./pkg/placecat.js')} Wasm */
 /** @typedef {import('./engine.js').Params} Params */
@@ -49,11 +49,7 @@ function open(wasm, t, params) {
 
 /** A described cloud as plain data. @param {import('./pkg/placecat.js').DescribedScan} scan @returns {ScanResult} */
 function resultOf(scan) {
-  const preview = scan.preview();
-  return {
-    name: scan.name, format: scan.format, descriptorJson: scan.descriptorJson(), summary: scan.summary(),
-    preview, site: siteSubsample(preview), pose: scan.pose() ?? undefined,
-  };
+  return { ...scanResult(scan), pose: scan.pose() ?? undefined };
 }
 
 /** The next cloud, undefined after the last; throws for a cloud that cannot be read. @param {import('./pkg/placecat.js').BagClouds} clouds */

@@ -222,6 +222,16 @@ function cutData(cut, threshold) {
 }
 
 /** The describing side (each worker): reads and describes one scan at a time. */
+/**
+ * What the page keeps of a described scan (a file's, or a bag cloud's, which
+ * adds its pose).
+ * @param {import('./pkg/placecat.js').DescribedScan} scan @returns {ScanResult}
+ */
+export function scanResult(scan) {
+  const preview = scan.preview();
+  return { name: scan.name, format: scan.format, descriptorJson: scan.descriptorJson(), summary: scan.summary(), preview, site: siteSubsample(preview) };
+}
+
 export class Describer {
   /** @param {Wasm} wasm */
   constructor(wasm) {
@@ -239,10 +249,7 @@ export class Describer {
    * @param {number} [previewPoints] @returns {ScanResult}
    */
   describe(bytes, name, params, previewPoints = 3000) {
-    return scoped(this.wasm.describeScan(bytes, name, params, undefined, previewPoints), (scan) => {
-      const preview = scan.preview();
-      return { name: scan.name, format: scan.format, descriptorJson: scan.descriptorJson(), summary: scan.summary(), preview, site: siteSubsample(preview) };
-    });
+    return scoped(this.wasm.describeScan(bytes, name, params, undefined, previewPoints), scanResult);
   }
 
   /**
