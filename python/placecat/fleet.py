@@ -48,9 +48,17 @@ def _is_url(path: str) -> bool:
     return "://" in path
 
 
+def _visible(rel: str) -> bool:
+    """No part of the path below the walked folder is hidden: hidden entries
+    are editor and OS leftovers (macOS ``._000000.bin``), not scans; the
+    CLI's describe skips them too."""
+    return not any(part.startswith(".") for part in rel.replace("\\", "/").split("/"))
+
+
 def list_scans(source: Source) -> List[str]:
     """The scan files of a source, sorted: a folder (walked with its
-    subfolders, hidden ones skipped, as the CLI's describe does), one file,
+    subfolders, symbolic links followed, hidden files and folders skipped,
+    as the CLI's describe does), one file,
     an fsspec URL of a folder (``s3://...``, ``file:///...``), or a list of
     any of these."""
     if not isinstance(source, (str, os.PathLike)):
@@ -62,15 +70,20 @@ def list_scans(source: Source) -> List[str]:
         fs, root = fsspec.core.url_to_fs(src)
         if fs.isfile(root):
             return [src]
-        return sorted(fs.unstrip_protocol(p) for p in fs.find(root) if p.lower().endswith(SCAN_EXTENSIONS))
+        base = root.rstrip("/") + "/"
+        return sorted(
+            fs.unstrip_protocol(p)
+            for p in fs.find(root)
+            if p.lower().endswith(SCAN_EXTENSIONS) and _visible(p[len(base) :] if p.startswith(base) else p)
+        )
     if os.path.isfile(src):
         return [src]
     if not os.path.isdir(src):
         raise placecat.PlacecatError(f"{src}: I/O: no such file or folder")
     out = []
-    for dirpath, dirnames, filenames in os.walk(src):
-        dirnames[:] = [d for d in dirnames if not d.startswith(".")]
-        out.extend(os.path.join(dirpath, f) for f in filenames if f.lower().endswith(SCAN_EXTENSIONS))
+    for dirpath, dirnames, filenames in os.walk(src, followlinks=True):
+        dirnames[:] = [d for d in dirnames if _visible(d)]
+        out.extend(os.path.join(dirpath, f) for f in filenames if f.lower().endswith(SCAN_EXTENSIONS) and _visible(f))
     return sorted(out)
 
 

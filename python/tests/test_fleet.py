@@ -112,3 +112,13 @@ def test_the_example_script_runs_and_restarts(tmp_path):
     again = subprocess.run(cmd + ["--describe-only"], capture_output=True, text=True)
     assert again.returncode == 0, again.stderr
     assert "described 0 of 5 files (5 already described, 0 skipped)" in again.stderr
+
+
+def test_list_scans_skips_hidden_entries_as_the_cli_does(tmp_path):
+    # macOS leaves ._name files beside each scan; editors leave .folders.
+    for rel in ["a.ply", "._a.ply", ".cache/b.ply", "sub/c.PCD", "sub/._c.pcd", "notes.txt"]:
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_bytes(b"")
+    want = [str(tmp_path / "a.ply"), str(tmp_path / "sub/c.PCD")]
+    assert fleet.list_scans(str(tmp_path)) == want
+    assert fleet.list_scans("file://" + str(tmp_path)) == ["file://" + f for f in want]
