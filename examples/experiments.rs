@@ -835,6 +835,10 @@ const SITES_TEXT: &str = "Both sites are routes through places, like the paper's
 /// Issue 14's third round (section 4), after SITES_TEXT.
 const THIRD_ROUND_TEXT: &str = include_str!("common/sites_third_round.md");
 
+/// Issue 14's fourth round (section 4): why two of the third round's test
+/// seeds fell short; the site did not change.
+const FOURTH_ROUND_TEXT: &str = include_str!("common/sites_fourth_round.md");
+
 /// The outdoor site's rows of the second round, as measured then: the
 /// third round changed the site, so they cannot be computed again.
 const SECOND_ROUND_OUTDOOR: &str = include_str!("common/sites_second_round_outdoor.md");
@@ -1023,8 +1027,9 @@ fn render_sensitivity(out: &mut String, rows: &[SensitivityRow]) -> Fmt {
 fn render_sites(out: &mut String, sites: &[SiteSection]) -> Fmt {
     writeln!(
         out,
-        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n",
-        THIRD_ROUND_TEXT.trim()
+        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n\n{}\n",
+        THIRD_ROUND_TEXT.trim(),
+        FOURTH_ROUND_TEXT.trim()
     )?;
     for site in sites {
         render_site(out, site)?;

@@ -66,6 +66,113 @@ struct Row {
     shares: [f64; 3],
     /// True kind of the nearest neighbour more than 25 scans away.
     nn: String,
+    /// What stands low around the sensor: trunks and crowns reaching below
+    /// 1 m above the sensor within 8 m of it (the outdoor preset's first
+    /// range begins at 5 m).
+    cover: usize,
+}
+
+/// Trunks (radius under 0.5 m, taller than the sensor) and spheres (crowns,
+/// saplings, bushes, heaps) reaching below 1 m above the sensor whose
+/// footprint comes within 8 m of it.
+fn low_cover(shapes: &[placecat::sim::geometry::Shape], p: [f64; 3]) -> usize {
+    use placecat::sim::geometry::Shape;
+    shapes
+        .iter()
+        .filter(|s| match **s {
+            Shape::Cylinder { radius, z1, .. } => radius < 0.5 && z1 > p[2],
+            Shape::Sphere { centre, radius } => centre[2] - radius < p[2] + 1.0,
+            _ => false,
+        })
+        .filter(|s| s.horizontal_distance(p[0], p[1]) < 8.0)
+        .count()
+}
+
+/// Errors summed over seeds: by the change of kind nearest along the route
+/// ("plain>road": the scans on either side of it) and by how many scans
+/// from it; and the low cover of path scans taken for road or path.
+#[derive(Default)]
+struct Tally {
+    /// (change, distance bucket) -> (wrong, scans).
+    by_change: std::collections::BTreeMap<(String, usize), (usize, usize)>,
+    /// (truth, predicted) -> (sum of cover, scans).
+    cover: std::collections::BTreeMap<(String, String), (usize, usize)>,
+}
+
+/// Distance buckets in scans from the nearest change of kind.
+const BUCKETS: [(usize, &str); 4] = [(5, "0-5"), (15, "6-15"), (30, "16-30"), (usize::MAX, ">30")];
+
+fn short(kind: &str) -> &'static str {
+    match kind {
+        "open_plain" => "plain",
+        "forest_road" => "road",
+        _ => "path",
+    }
+}
+
+/// The change of kind nearest to each scan along the route ("a>b") and
+/// how many scans away it is.
+fn nearest_changes(truth: &[String]) -> Vec<(String, usize)> {
+    let changes: Vec<(usize, String)> = (1..truth.len())
+        .filter(|&i| truth[i] != truth[i - 1])
+        .map(|i| (i, format!("{}>{}", short(&truth[i - 1]), short(&truth[i]))))
+        .collect();
+    (0..truth.len())
+        .map(|i| {
+            changes
+                .iter()
+                // The change lies between scans c-1 and c.
+                .map(|(c, name)| (name.clone(), if i >= *c { i - c } else { c - 1 - i }))
+                .min_by_key(|(_, d)| *d)
+                .unwrap_or(("none".into(), usize::MAX))
+        })
+        .collect()
+}
+
+impl Tally {
+    fn add(&mut self, rows: &[Row]) {
+        let truth: Vec<String> = rows.iter().map(|r| r.truth.clone()).collect();
+        for (r, (change, d)) in rows.iter().zip(nearest_changes(&truth)) {
+            let b = BUCKETS.iter().position(|(hi, _)| d <= *hi).unwrap();
+            let e = self.by_change.entry((change, b)).or_default();
+            e.0 += usize::from(r.truth != r.predicted);
+            e.1 += 1;
+            let c = self
+                .cover
+                .entry((short(&r.truth).into(), short(&r.predicted).into()))
+                .or_default();
+            c.0 += r.cover;
+            c.1 += 1;
+        }
+    }
+
+    fn print(&self, seeds: &[u64]) {
+        println!("summed over seeds {seeds:?}: wrong / scans by the nearest change of kind and scans from it");
+        let mut changes: Vec<&String> = self.by_change.keys().map(|(c, _)| c).collect();
+        changes.dedup();
+        let header: Vec<&str> = BUCKETS.iter().map(|(_, n)| *n).collect();
+        println!("  {:12} {}", "change", header.join("        "));
+        for c in changes {
+            let cells: Vec<String> = (0..BUCKETS.len())
+                .map(|b| {
+                    let (w, n) = self
+                        .by_change
+                        .get(&(c.clone(), b))
+                        .copied()
+                        .unwrap_or_default();
+                    format!("{w:3}/{n:4}  ")
+                })
+                .collect();
+            println!("  {c:12} {}", cells.join(" "));
+        }
+        println!("  low cover within 8 m (trunks and crowns), mean by truth -> k-means' kind:");
+        for ((t, p), (sum, n)) in &self.cover {
+            println!(
+                "    {t:5} -> {p:5} {:5.1} ({n} scans)",
+                *sum as f64 / *n as f64
+            );
+        }
+    }
 }
 
 /// Mean silhouette (Rousseeuw 1987) of `labels` under the matrix m.
@@ -227,7 +334,8 @@ fn main() {
     if warehouse_mode {
         return warehouse(&seeds);
     }
-    for seed in seeds {
+    let mut tally = Tally::default();
+    for &seed in &seeds {
         let run = sites::run_site(SceneKind::Outdoor, seed);
         let site = outdoor(&mut rng::rng(seed));
         let stops = site.route.stops(run.sim.len(), site.speed);
@@ -299,6 +407,7 @@ fn main() {
                 major,
                 shares,
                 nn: run.truth[nn].clone(),
+                cover: low_cover(run.sim.shapes(i), run.sim.sensor_pose(i).position),
             });
         }
         // Steps from the next change of kind, too.
@@ -312,9 +421,9 @@ fn main() {
         }
         for r in rows.iter().filter(|r| r.truth != r.predicted) {
             println!(
-                "  {:3} {:12} -> {:12} since {:3} until {:3} d_other {:5.1} turn {:5.0} disc {:12} ({:.2}/{:.2}/{:.2}) nn25 {}",
+                "  {:3} {:12} -> {:12} since {:3} until {:3} d_other {:5.1} turn {:5.0} disc {:12} ({:.2}/{:.2}/{:.2}) nn25 {} cover {}",
                 r.i, r.truth, r.predicted, r.since, until[r.i], r.d_other, r.turn, r.major,
-                r.shares[0], r.shares[1], r.shares[2], r.nn
+                r.shares[0], r.shares[1], r.shares[2], r.nn, r.cover
             );
         }
         // Error rate near a change of true kind along the route (5 scans,
@@ -350,5 +459,32 @@ fn main() {
             100.0 * nn_ok as f64 / n as f64
         );
         mean_deltas(&m, &run.truth, &OUTDOOR_KINDS);
+        let changes: Vec<String> = (1..n)
+            .filter(|&i| run.truth[i] != run.truth[i - 1])
+            .map(|i| {
+                format!(
+                    "{}>{} at {i}",
+                    short(&run.truth[i - 1]),
+                    short(&run.truth[i])
+                )
+            })
+            .collect();
+        println!(
+            "  {} changes of kind: {}",
+            changes.len(),
+            changes.join(", ")
+        );
+        let cover = |kind: &str| {
+            let sel: Vec<&Row> = rows.iter().filter(|r| r.truth == kind).collect();
+            sel.iter().map(|r| r.cover).sum::<usize>() as f64 / sel.len() as f64
+        };
+        println!(
+            "  low cover within 8 m, mean: plain {:.1}, road {:.1}, path {:.1}",
+            cover(OUTDOOR_KINDS[0]),
+            cover(OUTDOOR_KINDS[1]),
+            cover(OUTDOOR_KINDS[2])
+        );
+        tally.add(&rows);
     }
+    tally.print(&seeds);
 }
