@@ -7,8 +7,8 @@
 use crate::cluster::choose_k::{self, Choice, ChooseKParams, Clusterer, Method, DEFAULT_RULE};
 use crate::cluster::hkmeans::HkMeansParams;
 use crate::cluster::{
-    medoids, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams, KMeansResult,
-    KMedoids, KMedoidsParams, KMedoidsResult, Tree,
+    medoids, medoids_by, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams,
+    KMeansResult, KMedoids, KMedoidsParams, KMedoidsResult, Tree,
 };
 use crate::descriptor::{Descriptor, DescriptorParams};
 use crate::distance::{DistanceMatrix, DistanceOptions, Space};
@@ -386,7 +386,13 @@ impl Collection {
                 self.len()
             )));
         }
-        Ok(medoids(self.space()?, labels, 64, 0))
+        // The Delta matrix's values where the set has it (the same medoids).
+        Ok(match self.cache()? {
+            Cache {
+                matrix: Some(m), ..
+            } => medoids_by(labels, 64, 0, |i, j| m.get(i, j)),
+            Cache { space, .. } => medoids(space, labels, 64, 0),
+        })
     }
 
     /// A labelled model from cluster labels and a name per label.
