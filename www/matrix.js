@@ -1,13 +1,13 @@
 // The tail of a finished run in the workers: the Delta matrix, and the
-// reference sets of the choice of categories (the gap statistic's, the
-// costly part of the choice, which needs no tree). Each worker takes every
-// size-th row of the matrix (rows shrink down the matrix, so interleaved
-// shares are even) and every size-th reference set; the page mirrors the
-// rows into the n x n matrix and builds the tree while the workers draw
-// and cluster the reference sets, then chooses with them (engine.js). On
-// the main thread the matrix took 0.8 s of 1,000 scans and the choice
-// 0.4 s while the workers stood idle. A worker keeps the set it built for
-// the first task of a tail (`key`), so it reads the descriptors once.
+// reference sets of the choice of categories (the gap statistic's, its
+// costly part, which needs no tree). Each worker takes every size-th row
+// of the matrix (rows shrink down the matrix, so interleaved shares are
+// even), then reference sets one at a time, as it comes free. The page
+// mirrors the rows into the n x n matrix and builds the tree while the
+// workers draw and cluster the reference sets, then chooses with them
+// (engine.js). On the main thread the matrix took 0.8 s of 1,000 scans and
+// the choice 0.4 s, while the workers stood idle. A worker keeps the set
+// it built for the first task of a tail (`key`): it reads the descriptors once.
 
 /** Tails started by this page: the tasks of one share a key. */
 let tails = 0;
@@ -16,25 +16,17 @@ let tails = 0;
 export const tailKey = () => `tail ${++tails}`;
 
 /**
- * Every size-th number of 0..n, from each worker's own on.
- * @param {number} n @param {number} size @returns {number[][]}
- */
-function interleaved(n, size) {
-  return Array.from({ length: size }, (_, k) => {
-    const share = [];
-    for (let i = k; i < n; i += size) share.push(i);
-    return share;
-  });
-}
-
-/**
  * @param {import('./pool.js').WorkerPool} pool @param {import('./engine.js').Params} params
  * @param {string[]} descriptorJsons @param {string} [key] the tail's (tailKey)
  * @returns {Promise<Float32Array>} n x n, row-major
  */
 export async function matrixInWorkers(pool, params, descriptorJsons, key = tailKey()) {
   const n = descriptorJsons.length;
-  const shares = interleaved(n, pool.size);
+  const shares = Array.from({ length: pool.size }, (_, k) => {
+    const rows = [];
+    for (let i = k; i < n; i += pool.size) rows.push(i);
+    return rows;
+  });
   const values = await Promise.all(shares.map((rows) => pool.run({ type: 'deltaRows', key, params, descriptorJsons, rows })));
   const m = new Float32Array(n * n);
   shares.forEach((rows, k) => {
@@ -52,17 +44,17 @@ export async function matrixInWorkers(pool, params, descriptorJsons, key = tailK
 
 /**
  * Every reference set's dispersions (DescriptorSet.referenceDispersions),
- * in order, for a tree of `seed`: what Engine.suggestCategories takes.
+ * in order, for a tree of `seed`: what Engine.suggestCategories takes. One
+ * task a set, so that a worker slowed by the page's tree (or by anything
+ * else on the machine) takes fewer of them.
  * @param {import('./pool.js').WorkerPool} pool @param {import('./engine.js').Params} params
  * @param {string[]} descriptorJsons @param {{seed: number, sets: number}} choice the tree's seed and how many reference
  *   sets the choice draws (Engine.referenceSets) @param {string} [key] the tail's (tailKey)
  * @returns {Promise<Float64Array>}
  */
 export async function referencesInWorkers(pool, params, descriptorJsons, { seed, sets }, key = tailKey()) {
-  const shares = interleaved(sets, pool.size).filter((which) => which.length);
-  const values = await Promise.all(shares.map((which) => pool.run({ type: 'references', key, params, descriptorJsons, seed, which })));
-  const perSet = values[0].length / shares[0].length;
-  const all = new Float64Array(sets * perSet);
-  shares.forEach((which, k) => which.forEach((b, at) => all.set(values[k].subarray(at * perSet, (at + 1) * perSet), b * perSet)));
+  const values = await Promise.all(Array.from({ length: sets }, (_, b) => pool.run({ type: 'references', key, params, descriptorJsons, seed, which: [b] })));
+  const all = new Float64Array(values.reduce((n, v) => n + v.length, 0));
+  values.reduce((at, v) => (all.set(v, at), at + v.length), 0);
   return all;
 }
