@@ -237,7 +237,11 @@ fn reference_sets_computed_in_shares_elsewhere_give_the_same_scores_bit_for_bit(
         let mut short = sets.clone();
         short[7].pop();
         let e = scores_with_references(&space, Some(&matrix), clusterer, &p, &short).unwrap_err();
-        assert!(e.to_string().contains("10 of 10 (K = 1 to 10)"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("10 reference sets of 9 to 10 values given, 10 of 10 (K = 1 to 10)"),
+            "{e}"
+        );
     }
     let e = reference_log_w(&space, Clusterer::Tree(&tree, &hk).method(), &p, &[10]).unwrap_err();
     assert!(

@@ -383,10 +383,16 @@ pub fn scores_with_references(
     let n = check_sizes(space, matrix, clusterer, params)?;
     let k_max = params.max_k.min(n);
     if references.len() != params.references || references.iter().any(|r| r.len() != k_max) {
+        let short = references.iter().map(Vec::len).min().unwrap_or(0);
+        let long = references.iter().map(Vec::len).max().unwrap_or(0);
+        let values = if short == long {
+            short.to_string()
+        } else {
+            format!("{short} to {long}")
+        };
         return Err(crate::Error::Mismatch(format!(
-            "{} reference sets of {:?} values, where {} of {k_max} (K = 1 to {k_max}) were expected",
+            "{} reference sets of {values} values given, {} of {k_max} (K = 1 to {k_max}) expected",
             references.len(),
-            references.iter().map(Vec::len).collect::<std::collections::BTreeSet<_>>(),
             params.references
         )));
     }
