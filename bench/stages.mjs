@@ -24,11 +24,14 @@ export function stageBreakdown(entries, timeOrigin) {
     'load descriptors': sum('load'),
     'Delta matrix (in the workers)': sum('matrix'),
     'tree (and the Delta matrix, if not given)': sum('tree'),
-    'choose categories': sum('choose'),
+    'choose categories (with the wait for the workers\' reference sets)': sum('choose'),
     'cut and medoids': sum('cut') + sum('medoids'),
     'draw': sum('draw'),
     'run (from the first task)': run ? run.duration / 1000 : NaN,
   };
+  // The choice's reference sets, in the workers beside the tree (matrix.js): from the first one's start to the last one's end.
+  const sets = /** @type {any[]} */ (entries.find((e) => e.name === 'placecat:pool')?.detail ?? []).filter((c) => c.type === 'references');
+  stages['reference sets (in the workers, from the first to the last)'] = sets.length ? (Math.max(...sets.map((c) => c.end)) - Math.min(...sets.map((c) => c.start))) / 1000 : 0;
   const workers = [];
   for (const w of new Set(clocks.map((c) => c.worker))) {
     const mine = clocks.filter((c) => c.worker === w).sort((a, b) => a.start - b.start);

@@ -4,11 +4,11 @@
 //! the JS API both call it, so the parameter merge, the matrix policy and
 //! the name handling are written once, here.
 
-use crate::cluster::choose_k::{self, Choice, ChooseKParams, Clusterer, DEFAULT_RULE};
+use crate::cluster::choose_k::{self, Choice, ChooseKParams, Clusterer, Method, DEFAULT_RULE};
 use crate::cluster::hkmeans::HkMeansParams;
 use crate::cluster::{
-    medoids, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams, KMeansResult,
-    KMedoids, KMedoidsParams, KMedoidsResult, Tree,
+    medoids, medoids_by, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams,
+    KMeansResult, KMedoids, KMedoidsParams, KMedoidsResult, Tree,
 };
 use crate::descriptor::{Descriptor, DescriptorParams};
 use crate::distance::{DistanceMatrix, DistanceOptions, Space};
@@ -338,12 +338,42 @@ impl Collection {
         params: &ChooseKParams,
     ) -> Result<Choice> {
         self.check_nonempty()?;
-        if self.uses_matrix() {
+        let all: Vec<usize> = (0..params.references).collect();
+        let references = self.reference_log_w(clusterer.method(), params, &all)?;
+        self.choose_categories_with(clusterer, params, &references)
+    }
+
+    /// The gap statistic's reference sets `which` of
+    /// [`Collection::choose_categories`] (see [`choose_k::reference_log_w`]):
+    /// its costly part, in shares for other threads to compute, before the
+    /// tree of the data exists (the page splits them between its workers).
+    pub fn reference_log_w(
+        &mut self,
+        method: Method,
+        params: &ChooseKParams,
+        which: &[usize],
+    ) -> Result<Vec<Vec<f64>>> {
+        self.check_nonempty()?;
+        choose_k::reference_log_w(self.space()?, method, params, which)
+    }
+
+    /// [`Collection::choose_categories`] with every reference set's
+    /// [`Collection::reference_log_w`] computed beforehand, in order (by
+    /// another set of the same scans and parameters): the same choice.
+    pub fn choose_categories_with(
+        &mut self,
+        clusterer: Clusterer,
+        params: &ChooseKParams,
+        references: &[Vec<f64>],
+    ) -> Result<Choice> {
+        self.check_nonempty()?;
+        let scores = if self.uses_matrix() {
             let (space, matrix) = self.space_and_matrix()?;
-            choose_k::choose_k(space, Some(matrix), clusterer, params, DEFAULT_RULE)
+            choose_k::scores_with_references(space, Some(matrix), clusterer, params, references)
         } else {
-            choose_k::choose_k(self.space()?, None, clusterer, params, DEFAULT_RULE)
-        }
+            choose_k::scores_with_references(self.space()?, None, clusterer, params, references)
+        };
+        scores?.choose(DEFAULT_RULE)
     }
 
     /// The most central scan of each category, (label, index) by label
@@ -356,7 +386,13 @@ impl Collection {
                 self.len()
             )));
         }
-        Ok(medoids(self.space()?, labels, 64, 0))
+        // The Delta matrix's values where the set has it (the same medoids).
+        Ok(match self.cache()? {
+            Cache {
+                matrix: Some(m), ..
+            } => medoids_by(labels, 64, 0, |i, j| m.get(i, j)),
+            Cache { space, .. } => medoids(space, labels, 64, 0),
+        })
     }
 
     /// A labelled model from cluster labels and a name per label.

@@ -15,22 +15,28 @@ import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince, clearStages } from './stages.js';
-import { matrixInWorkers } from './matrix.js';
+import { matrixInWorkers, referencesInWorkers, tailKey } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
 /** How often a run shows its progress and saves its results (ms). */
 const TICK_MS = 200;
-/** From this many scans the workers compute the Delta matrix (below, it takes milliseconds). */
+/** From this many scans the workers compute the Delta matrix and the choice's reference sets (below, they take milliseconds). */
 const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
 /**
- * The run (state.run) whose Delta matrix the workers compute, if any: its
- * describing is over (state.running is false) but the pool still works for
- * it, so a new run or Cancel must cancel the pool then too.
+ * The run (state.run) whose Delta matrix or reference sets the workers
+ * compute, if any: its describing is over (state.running is false) but the
+ * pool still works for it, so a new run or Cancel must cancel the pool then too.
  * @type {number | null}
  */
 let matrixOf = null;
-/** Whether the pool works for the page's run (describing, or its Delta matrix). */
+/**
+ * The reference sets of the choice of categories that the workers compute
+ * for a set (state.set) and a tree seed (matrix.js); null where they failed.
+ * @type {{set: State['set'], seed: number, dispersions: Promise<Float64Array | null>} | null}
+ */
+let references = null;
+/** Whether the pool works for the page's run (describing, its Delta matrix or its reference sets). */
 const poolBusy = () => state.running || matrixOf !== null;
 /** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
 let unsaved = null;
@@ -191,10 +197,11 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   if (unit === 'clouds') showBags(inputs, bags);
   loadSet();
   // A cancelled run leaves the workers alone: the set computes its matrix.
-  if (done === all) await matrixFromWorkers(current);
+  if (done === all) await tailFromWorkers(current);
   if (!current()) return;
   view.sweep('');
-  cluster();
+  await cluster();
+  if (!current()) return;
   stageSince('run', began);
   performance.mark('placecat:pool', { detail: pool.clocks });
   // Finished runs, for scripts that drive the page (and the e2e tests).
@@ -212,28 +219,48 @@ function loadSet() {
 }
 
 /**
- * The set's Delta matrix from the workers (matrix.js), when the set keeps
- * one and it takes long enough to matter; if they fail or the run is
- * superseded, the set computes its own when needed.
+ * The tail of the run in the workers (matrix.js): the set's Delta matrix,
+ * when the set keeps one, and the reference sets of the first cut's choice,
+ * when the tree's first cut is to be chosen; only from enough scans to
+ * matter. Returns once the matrix is the set's: the reference sets come
+ * while the tree is built (cluster). If the workers fail or the run is
+ * superseded, the set computes its own.
  * @param {() => boolean} current whether the run is still the page's
  */
-async function matrixFromWorkers(current) {
-  if (!state.set?.usesMatrix || state.scans.length < WORKER_MATRIX_FROM) return;
+async function tailFromWorkers(current) {
+  if (!state.set || state.scans.length < WORKER_MATRIX_FROM) return;
   const start = performance.now();
   const run = state.run;
+  const params = /** @type {S.State['params'] & {}} */ (state.params);
+  const jsons = state.scans.map((r) => r.descriptorJson);
+  const key = tailKey();
+  const m = view.method();
+  const matrix = state.set.usesMatrix ? matrixInWorkers(pool, params, jsons, key) : null;
+  const dispersions = m.method === 'hkmeans' && 'auto' in S.nextCut(state)
+    ? referencesInWorkers(pool, params, jsons, { seed: m.hkSeed, sets: engine.referenceSets() }, key).catch(() => null)
+    : null;
+  if (dispersions) references = { set: state.set, seed: m.hkSeed, dispersions };
+  if (!matrix && !dispersions) return;
   matrixOf = run;
+  Promise.all([matrix, dispersions]).catch(() => {}).finally(() => matrixOf === run && (matrixOf = null));
+  if (!matrix) return;
   try {
-    const m = await matrixInWorkers(pool, /** @type {S.State['params'] & {}} */ (state.params), state.scans.map((r) => r.descriptorJson));
-    if (current()) engine.setMatrix(m);
+    const values = await matrix;
+    if (current()) engine.setMatrix(values);
   } catch {
     // cancelled (Cancel or a new run), or a worker died: the main thread computes it
-  } finally {
-    if (matrixOf === run) matrixOf = null;
   }
   if (current()) stageSince('matrix', start); // not into a newer run's measures
 }
 
-function cluster() {
+/** The reference sets' dispersions the workers compute for this set's tree of `seed`, if any. @param {number} seed */
+function workersDispersions(seed) {
+  const r = references;
+  return r && r.set === state.set && r.seed === seed ? r.dispersions : null;
+}
+
+/** Cluster the set by the method shown; the first cut of a tree waits for the workers' reference sets, if they compute them. */
+async function cluster() {
   const m = view.method();
   if (state.scans.length === 0) {
     view.status('No described scans yet.');
@@ -244,7 +271,13 @@ function cluster() {
       const next = S.nextCut(state);
       state = S.withTree(state, stage('tree', () => engine.hkmeans(m.hkSeed)));
       if (!('auto' in next)) return cutTree(next);
-      state = S.withFirstCut(state, stage('choose', () => engine.suggestCategories()));
+      const start = performance.now();
+      const tree = state.tree;
+      const pending = workersDispersions(m.hkSeed);
+      const dispersions = pending && (await pending);
+      if (state.tree !== tree) return; // clustered again meanwhile
+      state = S.withFirstCut(state, engine.suggestCategories(dispersions));
+      stageSince('choose', start); // with the wait for the workers
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);

@@ -34,14 +34,20 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   const results = new Array(inputs.length);
   /** @type {(import('./bag.js').BagInfo | undefined)[]} */
   const bags = new Array(inputs.length);
+  // What each input counts in the progress and how much of it is done, and
+  // their running sums (summed again at every result, they cost O(n^2) a run).
   const units = inputs.map(() => 1);
   const met = inputs.map(() => 0);
-  const sum = (/** @type {number[]} */ a) => a.reduce((x, y) => x + y, 0);
-  const progress = () => on.onProgress(sum(met), sum(units));
+  let allUnits = inputs.length, allMet = 0;
+  /** @param {number} i @param {number} value */
+  const setUnits = (i, value) => ((allUnits += value - units[i]), (units[i] = value));
+  /** @param {number} i @param {number} value */
+  const setMet = (i, value) => ((allMet += value - met[i]), (met[i] = value));
+  const progress = () => on.onProgress(allMet, allUnits);
   /** @param {number} i @param {import('./bagreader.js').BagPartial} p */
   const partial = (i, p) => {
-    units[i] = Math.max(1, p.total);
-    met[i] = p.met;
+    setUnits(i, Math.max(1, p.total));
+    setMet(i, p.met);
     if (p.scan) {
       const list = /** @type {ScanResult[]} */ (results[i] ??= []);
       list.push(p.scan);
@@ -54,7 +60,7 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   let measured = null;
   /** @param {number} i @param {any} r */
   const finished = (i, r) => {
-    met[i] = units[i];
+    setMet(i, units[i]);
     if (r.far !== undefined) measured ??= { far: r.far, from: r.bag ? inputs[i].name : r.name };
     if (r.bag) return (bags[i] = r);
     results[i] = r;
@@ -62,7 +68,7 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   };
   /** @param {number} i @param {Error} e */
   const failed = (i, e) => {
-    met[i] = units[i];
+    setMet(i, units[i]);
     on.onError(i, e);
   };
   let first = 0;
@@ -77,7 +83,7 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
       progress();
       break;
     } catch (e) {
-      if (e.message === 'cancelled') return { results, done: sum(met), total: sum(units), suggestion: null, bags };
+      if (e.message === 'cancelled') return { results, done: allMet, total: allUnits, suggestion: null, bags };
       failed(i, e);
       first++;
       progress();
@@ -92,5 +98,5 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   });
   const m = /** @type {{far: number, from: string} | null} */ (measured); // set in callbacks, which the type check does not follow
   const suggestion = m ? { preset: suggestPreset(m.far), ...m } : null;
-  return { results, done: sum(met), total: sum(units), suggestion, bags };
+  return { results, done: allMet, total: allUnits, suggestion, bags };
 }

@@ -113,13 +113,7 @@ export class Engine {
   load(params, descriptorJsons) {
     this.tree.clear();
     this.set.clear();
-    const set = new this.wasm.DescriptorSet(params, undefined);
-    try {
-      for (const json of descriptorJsons) set.addJson(json);
-    } catch (e) {
-      set.free();
-      throw e;
-    }
+    const set = descriptorSet(this.wasm, params, descriptorJsons);
     this.set.set(set);
     return { size: set.length, usesMatrix: set.usesMatrix, matrixLimit: set.matrixLimit };
   }
@@ -147,11 +141,20 @@ export class Engine {
    * The first cut of the kept tree: how many categories the rule chose from
    * the data (issue 14 item 3: the core's choose_k, `silhouette_gap` by
    * default; one category when the scans are alike under the descriptor), and why.
-   * @returns {{k: number, why: string}}
+   * `dispersions`: every reference set's, computed by the workers for this
+   * set and the tree's seed (matrix.js); the same choice, not computed here.
+   * @param {Float64Array | null} [dispersions] @returns {{k: number, why: string}}
    */
-  suggestCategories() {
-    const choice = this.set.get('scans').chooseCategories(this.tree.get('tree'));
+  suggestCategories(dispersions) {
+    const set = this.set.get('scans');
+    const tree = this.tree.get('tree');
+    const choice = dispersions ? set.chooseCategoriesWith(tree, dispersions) : set.chooseCategories(tree);
     return { k: choice.k, why: choiceReason(choice) };
+  }
+
+  /** How many reference sets the choice of categories draws. @returns {number} */
+  referenceSets() {
+    return this.set.get('scans').referenceSets;
   }
 
   /**
@@ -216,6 +219,21 @@ export class Engine {
   }
 }
 
+/**
+ * A set of these descriptors; a bad one throws, and nothing is left to free.
+ * @param {Wasm} wasm @param {Params} params @param {string[]} descriptorJsons
+ */
+function descriptorSet(wasm, params, descriptorJsons) {
+  const set = new wasm.DescriptorSet(params, undefined);
+  try {
+    for (const json of descriptorJsons) set.addJson(json);
+  } catch (e) {
+    set.free();
+    throw e;
+  }
+  return set;
+}
+
 /** @param {import('./pkg/placecat.js').Cut} cut @param {number} threshold @returns {CutData} */
 function cutData(cut, threshold) {
   return { labels: Int32Array.from(cut.labels), nodes: cut.nodes, threshold };
@@ -242,6 +260,9 @@ export class Describer {
     /** @type {Slot<import('./pkg/placecat.js').Model>} */
     this.model = new Slot();
     this.modelJson = '';
+    /** @type {Slot<import('./pkg/placecat.js').DescriptorSet>} the set of the last tail's tasks */
+    this.set = new Slot();
+    this.setKey = '';
   }
 
   /**
@@ -253,15 +274,37 @@ export class Describer {
   }
 
   /**
+   * The set of a run's tail (matrix.js): built from these descriptors for
+   * the first of its tasks (`key`), kept for the next ones, so that each
+   * worker reads the descriptors and prepares them once.
+   * @param {string} key @param {Params} params @param {string[]} descriptorJsons
+   */
+  tailSet(key, params, descriptorJsons) {
+    if (key !== this.setKey || !this.set.value) {
+      this.set.clear();
+      this.set.set(descriptorSet(this.wasm, params, descriptorJsons));
+      this.setKey = key;
+    }
+    return this.set.get('set');
+  }
+
+  /**
    * Delta from each scan of `rows` to every later one, row after row, in a
    * set of these descriptors: this worker's share of the Delta matrix.
-   * @param {Params} params @param {string[]} descriptorJsons @param {number[]} rows @returns {Float32Array}
+   * @param {string} key @param {Params} params @param {string[]} descriptorJsons @param {number[]} rows @returns {Float32Array}
    */
-  deltaRows(params, descriptorJsons, rows) {
-    return scoped(new this.wasm.DescriptorSet(params, undefined), (set) => {
-      for (const json of descriptorJsons) set.addJson(json);
-      return set.deltaRows(Uint32Array.from(rows));
-    });
+  deltaRows(key, params, descriptorJsons, rows) {
+    return this.tailSet(key, params, descriptorJsons).deltaRows(Uint32Array.from(rows));
+  }
+
+  /**
+   * The reference sets `which` of the choice of categories for a tree of
+   * `seed`, in a set of these descriptors: this worker's share of the choice.
+   * @param {string} key @param {Params} params @param {string[]} descriptorJsons @param {number} seed @param {number[]} which
+   * @returns {Float64Array}
+   */
+  referenceDispersions(key, params, descriptorJsons, seed, which) {
+    return this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which));
   }
 
   /** The share of a scan's points beyond 10 m (all its points, not the preview). @param {Uint8Array} bytes @param {string} name */
@@ -317,5 +360,6 @@ export class Describer {
   dispose() {
     this.simulator.clear();
     this.model.clear();
+    this.set.clear();
   }
 }

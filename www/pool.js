@@ -124,19 +124,18 @@ export class WorkerPool {
   }
 
   /**
-   * Run every task; results in task order (a hole where a task failed or
-   * was cancelled), `done` counts those that finished or failed. Each
-   * callback is called as its task settles; a cancelled task calls none.
+   * Run every task; each callback is called as its task settles (a
+   * cancelled task calls none), `onSettled` with how many finished or
+   * failed so far. Resolves to that count once every task settled.
    * @param {any[]} tasks
    * @param {{onResult: (i: number, r: any) => void, onError: (i: number, e: Error) => void, onSettled: (done: number) => void,
    *   onPartial?: (i: number, p: any) => void}} on
+   * @returns {Promise<number>}
    */
   async runAll(tasks, { onResult, onError, onSettled, onPartial }) {
-    const results = new Array(tasks.length);
     let done = 0;
     await Promise.all(tasks.map((task, i) => this.run(task, onPartial && ((p) => onPartial(i, p))).then(
       (r) => {
-        results[i] = r;
         done++;
         onResult(i, r);
       },
@@ -146,7 +145,7 @@ export class WorkerPool {
         onError(i, e);
       },
     ).finally(() => onSettled(done))));
-    return { results, done };
+    return done;
   }
 
   /** Drop queued tasks and stop running ones (their promises reject). */

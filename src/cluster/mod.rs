@@ -20,7 +20,7 @@ pub use dbscan::{Dbscan, DbscanParams};
 pub use hkmeans::{HierarchicalKMeans, Tree, TreeNode};
 pub use kmeans::{KMeans, KMeansParams, KMeansResult, Seeding};
 pub use kmedoids::{KMedoids, KMedoidsParams, KMedoidsResult};
-pub use medoid::medoids;
+pub use medoid::{medoids, medoids_by};
 
 /// Parameters checked once into the validated form an algorithm requires,
 /// in the manner of linfa's `ParamGuard`: `params.check()?` gives the

@@ -144,6 +144,45 @@ impl DescriptorSet {
         let how = choose_k::Clusterer::Tree(&tree.tree, &tree.params);
         to_js(&self.set.choose_categories(how, &Default::default())?)
     }
+    /// The gap statistic's reference sets `which` (numbers 0 to
+    /// `referenceSets - 1`) of `chooseCategories` for a tree of `seed`: for
+    /// each, log(W*_K / m) at K = 1 to min(10, length), set after set. The
+    /// costly part of the choice, and it needs no tree: workers compute it
+    /// in shares while the page builds the tree; `chooseCategoriesWith`
+    /// takes every set's.
+    #[wasm_bindgen(js_name = referenceDispersions)]
+    pub fn reference_dispersions(
+        &mut self,
+        seed: u32,
+        which: &[u32],
+    ) -> WasmResult<js_sys::Float64Array> {
+        let which: Vec<usize> = which.iter().map(|&b| b as usize).collect();
+        let tree = HkMeansParams::new(seed.into());
+        let how = choose_k::Method::Tree(&tree);
+        let sets = self.set.reference_log_w(how, &Default::default(), &which)?;
+        Ok(js_sys::Float64Array::from(&sets.concat()[..]))
+    }
+    /// How many reference sets `chooseCategories` draws (see `referenceDispersions`).
+    #[wasm_bindgen(getter, js_name = referenceSets)]
+    pub fn reference_sets(&self) -> usize {
+        choose_k::ChooseKParams::default().references
+    }
+    /// `chooseCategories(tree)` with the `referenceDispersions` of every
+    /// reference set, in order, one after the other (computed with `tree`'s
+    /// seed by a set of the same descriptors in the same order, e.g. in
+    /// workers): the same choice, bit for bit, without computing them here.
+    #[wasm_bindgen(js_name = chooseCategoriesWith, unchecked_return_type = "Choice")]
+    pub fn choose_categories_with(
+        &mut self,
+        tree: &ClusterTree,
+        dispersions: &[f64],
+    ) -> WasmResult<JsValue> {
+        let params = choose_k::ChooseKParams::default();
+        let per_set = params.max_k.min(self.set.len()).max(1);
+        let sets: Vec<Vec<f64>> = dispersions.chunks(per_set).map(<[f64]>::to_vec).collect();
+        let how = choose_k::Clusterer::Tree(&tree.tree, &tree.params);
+        to_js(&self.set.choose_categories_with(how, &params, &sets)?)
+    }
     /// How many categories k-means should make of this set (as
     /// `chooseCategories`, for `kmeans(k, seeding, seed)`).
     #[wasm_bindgen(js_name = chooseK, unchecked_return_type = "Choice")]

@@ -55,6 +55,13 @@ test('the outdoor demo, no click but its button: a site of 300 scans, the catego
   assert.match(await text('#cut-note'), /^3 categories: the gap statistic's choice \(best mean silhouette 0\.\d\d\)$/);
   assert.match(await text('#cluster-status'), /^3 categories from 300 scans$/);
   assert.equal(await h.page.$$eval('#legend li', (li) => li.length), 3);
+  // The choice's 10 reference sets were computed by the two workers
+  // (matrix.js), one task a set, after each worker's rows of the matrix.
+  const tail = await h.page.evaluate(() => /** @type {any} */ (performance.getEntriesByName('placecat:pool')[0]).detail
+    .filter((c) => c.type === 'deltaRows' || c.type === 'references').map((c) => `${c.type} ${c.worker}`));
+  assert.deepEqual(tail.filter((c) => c.startsWith('deltaRows')).sort(), ['deltaRows 0', 'deltaRows 1']);
+  assert.equal(tail.filter((c) => c.startsWith('references')).length, 10);
+  assert.ok(tail.includes('references 0') && tail.includes('references 1'), tail.join(', '));
   // Accuracy at these three categories. Issue 14 asks for at least 97 %;
   // not met by 1 scan of 300: the page shows 96.7 % (ARI 0.906), the CLI's
   // figure for what the page does (`placecat cluster --method hkmeans

@@ -3,7 +3,10 @@
 
 use crate::common;
 use common::*;
-use placecat::cluster::choose_k::{choose_k, ChooseKParams, Clusterer, Rule, DEFAULT_RULE};
+use placecat::cluster::choose_k::{
+    choose_k, reference_log_w, scores, scores_with_references, ChooseKParams, Clusterer, Rule,
+    DEFAULT_RULE,
+};
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::{HierarchicalKMeans, KMeansParams, Space};
 use placecat::descriptor::Summary;
@@ -188,4 +191,61 @@ fn bad_requests_are_errors() {
     assert!(e.to_string().contains("a tree of 4"), "{e}");
     let zero = ChooseKParams { max_k: 0, ..p };
     assert!(choose_k(&space, None, Clusterer::KMeans(&km), &zero, DEFAULT_RULE).is_err());
+}
+
+#[test]
+fn reference_sets_computed_in_shares_elsewhere_give_the_same_scores_bit_for_bit() {
+    // What the page does: two workers, each with its own set of the same
+    // descriptors, compute every other reference set; the main thread
+    // scores with them. 3 groups of 25; reference sets of 40 of the 75.
+    let mut r = rng(6);
+    let mut d = group(&mut r, &proto(0), 0.3, 25);
+    d.extend(group(&mut r, &proto(2), 0.3, 25));
+    d.extend(group(&mut r, &proto(4), 0.3, 25));
+    let space = Space::new(&d, DistanceOptions::default()).unwrap();
+    let matrix = space.matrix();
+    let hk = HkMeansParams::new(3);
+    let tree = HierarchicalKMeans::fit(&space, &matrix, &hk).unwrap();
+    let p = ChooseKParams {
+        reference_size: 40,
+        ..Default::default()
+    };
+    for clusterer in [
+        Clusterer::Tree(&tree, &hk),
+        Clusterer::KMeans(&KMeansParams::new(1)),
+    ] {
+        let whole = scores(&space, Some(&matrix), clusterer, &p).unwrap();
+        let worker = |which: &[usize]| {
+            let own = Space::new(&d, DistanceOptions::default()).unwrap();
+            reference_log_w(&own, clusterer.method(), &p, which).unwrap()
+        };
+        let (even, odd) = (worker(&[0, 2, 4, 6, 8]), worker(&[1, 3, 5, 7, 9]));
+        let sets: Vec<Vec<f64>> = (0..10)
+            .map(|b| [&even, &odd][b % 2][b / 2].clone())
+            .collect();
+        let split = scores_with_references(&space, Some(&matrix), clusterer, &p, &sets).unwrap();
+        // Debug prints each f64 exactly (shortest round trip), NaN included.
+        assert_eq!(format!("{split:?}"), format!("{whole:?}"));
+        // Each set is its own draw: set 3 alone is the whole run's fourth.
+        assert_eq!(worker(&[3]), vec![sets[3].clone()]);
+        assert_ne!(sets[3], sets[4]);
+        assert_eq!(split.choose(DEFAULT_RULE).unwrap().k, 3);
+        // A missing set or a short one is refused, naming what was expected.
+        let e =
+            scores_with_references(&space, Some(&matrix), clusterer, &p, &sets[1..]).unwrap_err();
+        assert!(e.to_string().contains("9 reference sets"), "{e}");
+        let mut short = sets.clone();
+        short[7].pop();
+        let e = scores_with_references(&space, Some(&matrix), clusterer, &p, &short).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("10 reference sets of 9 to 10 values given, 10 of 10 (K = 1 to 10)"),
+            "{e}"
+        );
+    }
+    let e = reference_log_w(&space, Clusterer::Tree(&tree, &hk).method(), &p, &[10]).unwrap_err();
+    assert!(
+        e.to_string().contains("reference set 10 asked for, of 10"),
+        "{e}"
+    );
 }

@@ -487,3 +487,35 @@ fn a_matrix_assembled_from_shares_of_rows_is_the_matrix_and_a_bad_one_is_refused
     // A matrix refused leaves the set computing its own.
     assert_eq!(other.matrix().unwrap().data, data);
 }
+
+#[test]
+fn medoids_from_the_delta_matrix_are_those_computed_from_the_space() {
+    use placecat::cluster::medoids_by;
+    use placecat::Collection;
+    let (ds, _) = sim_set(4, 17);
+    let space = Space::new(&ds, DistanceOptions::default()).unwrap();
+    let m = space.matrix();
+    // One category of all 20 and a split; exact, and sampled (5 of the members).
+    let split = KMeans::fit(&space, &KMeansParams::new(3).seeding(Seeding::Stride))
+        .unwrap()
+        .labels;
+    for labels in [vec![0; 20], split] {
+        for sample in [64, 5] {
+            let from_space = medoids(&space, &labels, sample, 2);
+            assert_eq!(
+                medoids_by(&labels, sample, 2, |i, j| m.get(i, j)),
+                from_space
+            );
+        }
+        // A collection uses its matrix once it has one: the same medoids.
+        let params = DescriptorParams::indoor();
+        let named = ds
+            .iter()
+            .enumerate()
+            .map(|(i, d)| (format!("s{i}"), d.clone()));
+        let mut set = Collection::from_parts(params, named).unwrap();
+        let before = set.medoids(&labels).unwrap();
+        set.matrix().unwrap();
+        assert_eq!(set.medoids(&labels).unwrap(), before);
+    }
+}

@@ -197,7 +197,7 @@ test('the Delta matrix from the workers\' shares (matrix.js) is the set\'s own, 
   const jsons = scans.map((s) => s.descriptorJson);
   const d = new Describer(wasm);
   // Three stand-in workers, each computing its share as worker.js does.
-  const pool = /** @type {any} */ ({ size: 3, run: async (t) => d.deltaRows(t.params, t.descriptorJsons, t.rows) });
+  const pool = /** @type {any} */ ({ size: 3, run: async (t) => d.deltaRows(t.key, t.params, t.descriptorJsons, t.rows) });
   const m = await matrixInWorkers(pool, params, jsons);
   d.dispose();
   const own = scoped(new wasm.DescriptorSet(params, undefined), (set) => {
@@ -223,5 +223,58 @@ test('the Delta matrix from the workers\' shares (matrix.js) is the set\'s own, 
   e.setMatrix(m);
   assert.equal(e.delta(3, 17), m[3 * 40 + 17]);
   assert.ok(e.hkmeans(0).nodes.length > 40);
+  e.dispose();
+});
+
+test('the choice\'s reference sets from the workers\' shares (matrix.js) give the set\'s own choice; each worker reads the descriptors once a tail', async () => {
+  const { matrixInWorkers, referencesInWorkers, tailKey } = await import('../../www/matrix.js');
+  const jsons = scans.map((s) => s.descriptorJson);
+  // Three stand-in workers, each with its own describer, running their tasks as worker.js does.
+  const workers = [0, 1, 2].map(() => new Describer(wasm));
+  const built = [0, 0, 0];
+  const tasks = [];
+  let next = 0;
+  const pool = /** @type {any} */ ({
+    size: 3,
+    run: async (t) => {
+      const w = next++ % 3;
+      const d = workers[w];
+      const before = d.set.value;
+      tasks.push([w, t.type, t.type === 'references' ? t.which : t.rows.length]);
+      const r = t.type === 'references' ? d.referenceDispersions(t.key, t.params, t.descriptorJsons, t.seed, t.which) : d.deltaRows(t.key, t.params, t.descriptorJsons, t.rows);
+      if (d.set.value !== before) built[w]++;
+      return r;
+    },
+  });
+  const e = new Engine(wasm);
+  e.load(params, jsons);
+  assert.equal(e.referenceSets(), 10);
+  const key = tailKey();
+  const matrix = matrixInWorkers(pool, params, jsons, key);
+  const dispersions = await referencesInWorkers(pool, params, jsons, { seed: 0, sets: e.referenceSets() }, key);
+  await matrix;
+  // Rows first, then one task a reference set, in order; one set built per worker for all its tasks.
+  assert.deepEqual(tasks.slice(0, 4), [[0, 'deltaRows', 14], [1, 'deltaRows', 13], [2, 'deltaRows', 13], [0, 'references', [0]]]);
+  assert.deepEqual(tasks.slice(3).map((t) => t[2][0]), [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]);
+  assert.deepEqual(built, [1, 1, 1]);
+  // 10 sets of log W* at K = 1..10, in order: the set's own, value for value.
+  const own = scoped(new wasm.DescriptorSet(params, undefined), (set) => {
+    for (const j of jsons) set.addJson(j);
+    return set.referenceDispersions(0, Uint32Array.from({ length: 10 }, (_, b) => b));
+  });
+  assert.equal(dispersions.length, 100);
+  assert.deepEqual(dispersions, own);
+  assert.ok(dispersions.every(Number.isFinite) && dispersions[0] !== dispersions[10], 'each set its own draw');
+  e.hkmeans(0);
+  const choice = e.set.get('scans').chooseCategories(e.tree.get('tree'));
+  assert.deepEqual(e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions), choice);
+  assert.deepEqual(e.suggestCategories(dispersions), e.suggestCategories());
+  assert.equal(e.suggestCategories(dispersions).k, 3);
+  // A share missing is refused, naming what was expected.
+  assert.throws(() => e.suggestCategories(dispersions.subarray(10)), /9 reference sets .*10 of 10/);
+  // Another tail's key builds the set again (its two tasks come to workers 1 and 2, in turn).
+  await referencesInWorkers(pool, params, jsons.slice(0, 20), { seed: 0, sets: 2 }, tailKey());
+  assert.deepEqual(built, [1, 2, 2]);
+  for (const d of workers) d.dispose();
   e.dispose();
 });

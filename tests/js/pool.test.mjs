@@ -1,7 +1,7 @@
 // The worker pool's scheduling with stand-in workers: tasks held several at
 // a time within a byte budget, bags alone, a worker's death blamed on the
-// task that caused it, and the main thread's preparation (reading a file)
-// before a task is posted.
+// task that caused it, the main thread's preparation (reading a file)
+// before a task is posted, and a run's tail shared between the workers.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { WorkerPool } from '../../www/pool.js';
@@ -95,9 +95,10 @@ test('prepare: the bytes it reads are posted and transferred, not the file', asy
 test('prepare: a read that fails fails its task alone, with its error, and the next task takes its place', async () => {
   const p = pool(2, { prepare: (t) => t.name === 'x' ? Promise.reject(new Error('x.ply: could not be read')) : Promise.resolve(readBytes(t)) });
   const errors = [];
+  const results = [];
   const names = ['a', 'x', 'c', 'd', 'e'];
   const all = p.runAll(names.map((name) => ({ type: 'describe', name, file: { bytes: new ArrayBuffer(1) } })), {
-    onResult: () => {}, onError: (i, e) => errors.push(`${names[i]}: ${e.message}`), onSettled: () => {},
+    onResult: (i, r) => (results[i] = r), onError: (i, e) => errors.push(`${names[i]}: ${e.message}`), onSettled: () => {},
   });
   await settle();
   const [w0, w1] = FakeWorker.all;
@@ -105,10 +106,9 @@ test('prepare: a read that fails fails its task alone, with its error, and the n
   // x was never posted; e came in its place.
   assert.deepEqual([w0.held(), w1.held()], [['a', 'c'], ['d', 'e']]);
   for (const w of [w0, w0, w1, w1]) w.answer();
-  const { results, done } = await all;
+  assert.equal(await all, 5, 'every task finished or failed');
   assert.deepEqual([...results], ['a', undefined, 'c', 'd', 'e']);
-  assert.equal(1 in results, false, 'a hole where x failed');
-  assert.equal(done, 5);
+  assert.equal(1 in results, false, 'no result where x failed');
 });
 
 test('prepare: a read that ends after cancel, or after its worker died, is not posted to that worker', async () => {
@@ -199,4 +199,38 @@ test('a batch hands its items over together, once per tick, and at once on flush
   assert.deepEqual(calls, [[1, 2, 3], [4]]);
   await new Promise((ok) => setTimeout(ok, 40));
   assert.equal(calls.length, 2, 'flush cancels the pending tick');
+});
+
+test('a run\'s tail (matrix.js): each worker gets its rows of the matrix first, then reference sets; one slowed down takes fewer', async () => {
+  const { matrixInWorkers, referencesInWorkers, tailKey } = await import('../../www/matrix.js');
+  const p = pool(4);
+  const jsons = ['a', 'b', 'c', 'd', 'e'];
+  const key = tailKey();
+  const matrix = matrixInWorkers(p, /** @type {any} */ ({}), jsons, key);
+  const dispersions = referencesInWorkers(p, /** @type {any} */ ({}), jsons, { seed: 0, sets: 10 }, key);
+  const [w0, w1] = FakeWorker.all;
+  const held = (w) => w.posted.filter((m) => !m.answered).map((m) => m.task.type === 'references' ? m.task.which[0] : `rows ${m.task.rows}`);
+  // Answer a worker's oldest task as worker.js would: the share's Delta values, or set b's two values [b, b + 0.5].
+  const answer = (w) => {
+    const m = w.posted.find((q) => !q.answered);
+    m.answered = true;
+    const { task } = m;
+    const result = task.type === 'references' ? Float64Array.of(task.which[0], task.which[0] + 0.5)
+      : Float32Array.from(task.rows.flatMap((i) => jsons.slice(i + 1).map((_, j) => 10 * i + i + 1 + j)));
+    w.onmessage({ data: { id: m.id, ok: true, result, clock: { arrived: 0, start: 0, read: 0, end: 0 } } });
+  };
+  assert.deepEqual([held(w0), held(w1)], [['rows 0,2,4', 0, 2, 4], ['rows 1,3', 1, 3, 5]]);
+  assert.ok([...w0.posted, ...w1.posted].every((m) => m.task.key === key), 'one key: a worker builds its set once');
+  // Worker 1 is slowed down (the page's tree, another process): worker 0 takes the sets left, as it comes free.
+  for (let k = 0; k < 8; k++) {
+    answer(w0);
+    await settle();
+  }
+  assert.deepEqual([held(w0), held(w1)], [[], ['rows 1,3', 1, 3, 5]]);
+  for (let k = 0; k < 4; k++) answer(w1);
+  // The values in order of the sets, the rows mirrored: (i, j) = 10 i + j.
+  assert.deepEqual(await dispersions, Float64Array.from({ length: 20 }, (_, k) => Math.floor(k / 2) + (k % 2) / 2));
+  const m = await matrix;
+  assert.deepEqual([m[0 * 5 + 3], m[3 * 5 + 0], m[3 * 5 + 4], m[4 * 5 + 3], m[2 * 5 + 2]], [3, 3, 34, 34, 0]);
+  assert.equal(p.clocks.filter((c) => c.type === 'references' && c.worker === 1).length, 3, 'the slow worker did 3 sets of 10');
 });

@@ -3,7 +3,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { stageBreakdown } from '../../bench/stages.mjs';
 
-test('the workers\' table counts the scans\' tasks only, not the Delta matrix\'s', () => {
+test('the workers\' table counts the scans\' tasks only, not the Delta matrix\'s nor the reference sets\'', () => {
   const clock = (type, worker, start, end) => ({ type, worker, posted: start - 5, arrived: start - 1, start, read: start + 1, end, received: end + 1 });
   const entries = [
     { name: 'placecat:files', startTime: 0, duration: 0 },
@@ -11,6 +11,7 @@ test('the workers\' table counts the scans\' tasks only, not the Delta matrix\'s
     { name: 'placecat:pool', startTime: 0, duration: 0, detail: [
       clock('describe', 0, 100, 110), clock('describe', 0, 110, 130), clock('describe', 1, 100, 140),
       clock('deltaRows', 0, 200, 900), clock('deltaRows', 1, 200, 880),
+      clock('references', 1, 885, 940), clock('references', 0, 905, 960), clock('references', 1, 940, 990),
     ] },
   ];
   const { workers, stages } = stageBreakdown(entries, 0);
@@ -19,4 +20,6 @@ test('the workers\' table counts the scans\' tasks only, not the Delta matrix\'s
   assert.equal(workers[0].describing.toFixed(3), '0.028');
   assert.equal(stages['Delta matrix (in the workers)'], 0.7);
   assert.equal(stages['files to first task'], 0.095);
+  // The reference sets: from the first one's start (885) to the last one's end (990).
+  assert.equal(stages['reference sets (in the workers, from the first to the last)'], 0.105);
 });

@@ -84,6 +84,35 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     assert!(message(tree.count_at(f32::NAN).err().unwrap()).contains("threshold"));
     let db = set.dbscan(0.5, 2).unwrap().to_vec();
     assert_eq!(db.len(), 6);
+    // The choice of categories with its reference sets computed elsewhere
+    // (another set of the same scans, in two shares, as the page's workers):
+    // the same choice; a share missing or a set out of range is an Error.
+    let (mut other, _) = real_set();
+    assert_eq!(set.reference_sets(), 10);
+    let (even, odd) = (
+        other
+            .reference_dispersions(2, &[0, 2, 4, 6, 8])
+            .unwrap()
+            .to_vec(),
+        other
+            .reference_dispersions(2, &[1, 3, 5, 7, 9])
+            .unwrap()
+            .to_vec(),
+    );
+    assert_eq!(even.len(), 5 * 6, "K = 1 to 6 for six scans");
+    let all: Vec<f64> = (0..10)
+        .flat_map(|b| [&even, &odd][b % 2][b / 2 * 6..b / 2 * 6 + 6].to_vec())
+        .collect();
+    let with = set.choose_categories_with(&tree, &all).unwrap();
+    let own = set.choose_categories(&tree).unwrap();
+    assert_eq!(
+        js_sys::JSON::stringify(&with).unwrap(),
+        js_sys::JSON::stringify(&own).unwrap()
+    );
+    let e = message(set.choose_categories_with(&tree, &all[6..]).err().unwrap());
+    assert!(e.contains("9 reference sets"), "{e}");
+    let e = message(other.reference_dispersions(2, &[10]).err().unwrap());
+    assert!(e.contains("reference set 10 asked for, of 10"), "{e}");
 }
 
 #[wasm_bindgen_test]

@@ -206,6 +206,28 @@ pub struct Scores {
     pub height_ratio: Option<Vec<f64>>,
 }
 
+/// How a reference set of the gap statistic is clustered: as the data were
+/// (a tree with the data tree's parameters, or k-means with the same ones).
+/// Unlike [`Clusterer`] it needs no tree of the data, so reference sets
+/// can be clustered before that tree exists, on another thread.
+#[derive(Debug, Clone, Copy)]
+pub enum Method<'a> {
+    /// Hierarchical k-means++ with these parameters, cut with [`Tree::cut_k`].
+    Tree(&'a HkMeansParams),
+    /// k-means with these parameters (their `k` is ignored).
+    KMeans(&'a KMeansParams),
+}
+
+impl<'a> Clusterer<'a> {
+    /// How the reference sets are clustered for this clusterer.
+    pub fn method(&self) -> Method<'a> {
+        match *self {
+            Clusterer::Tree(_, p) => Method::Tree(p),
+            Clusterer::KMeans(p) => Method::KMeans(p),
+        }
+    }
+}
+
 /// Choose K with `rule`.
 pub fn choose_k(
     space: &Space,
@@ -217,41 +239,40 @@ pub fn choose_k(
     scores(space, matrix, clusterer, params)?.choose(rule)
 }
 
-/// The categories of `space` at K = 1..=k_max by `clusterer`.
-fn partitions(
-    space: &Space,
-    clusterer: Clusterer,
-    k_max: usize,
-    reference: bool,
-) -> Result<Vec<Vec<i32>>> {
-    match clusterer {
-        Clusterer::Tree(tree, p) => {
-            let built;
-            let tree = if reference {
-                // Node heights are exact diameters either way up to
-                // EXACT_DIAMETER_LIMIT scans, so the tree is the same (tests/it
-                // clustering.rs, without_the_matrix_small_trees_are_identical);
-                // a reference set's m x m matrix computes each Delta once, where
-                // the nodes' diameters computed them again at every level. The
-                // page's choice on 1,000 scans: 1.2 -> 0.5 s (wasm); `placecat
-                // cluster` on them, one thread: 0.95 -> 0.74 s, output identical.
-                built = if space.len() <= EXACT_DIAMETER_LIMIT {
-                    HierarchicalKMeans::fit(space, &space.matrix(), p)?
-                } else {
-                    HierarchicalKMeans::fit_without_matrix(space, p)?
-                };
-                &built
+/// k-means' categories of `space` at K = 1..=k_max.
+fn kmeans_partitions(space: &Space, p: &KMeansParams, k_max: usize) -> Result<Vec<Vec<i32>>> {
+    (1..=k_max)
+        .map(|k| {
+            let p = KMeansParams { k, ..p.clone() };
+            Ok(KMeans::fit(space, &p)?.labels)
+        })
+        .collect()
+}
+
+/// `tree`'s categories at K = 1..=k_max.
+fn cuts(tree: &Tree, k_max: usize) -> Result<Vec<Vec<i32>>> {
+    (1..=k_max).map(|k| Ok(tree.cut_k(k)?.labels)).collect()
+}
+
+/// The categories of a reference set at K = 1..=k_max by `method`.
+fn reference_partitions(space: &Space, method: Method, k_max: usize) -> Result<Vec<Vec<i32>>> {
+    match method {
+        Method::Tree(p) => {
+            // Node heights are exact diameters either way up to
+            // EXACT_DIAMETER_LIMIT scans, so the tree is the same (tests/it
+            // clustering.rs, without_the_matrix_small_trees_are_identical);
+            // a reference set's m x m matrix computes each Delta once, where
+            // the nodes' diameters computed them again at every level. The
+            // page's choice on 1,000 scans: 1.2 -> 0.5 s (wasm); `placecat
+            // cluster` on them, one thread: 0.95 -> 0.74 s, output identical.
+            let tree = if space.len() <= EXACT_DIAMETER_LIMIT {
+                HierarchicalKMeans::fit(space, &space.matrix(), p)?
             } else {
-                tree
+                HierarchicalKMeans::fit_without_matrix(space, p)?
             };
-            (1..=k_max).map(|k| Ok(tree.cut_k(k)?.labels)).collect()
+            cuts(&tree, k_max)
         }
-        Clusterer::KMeans(p) => (1..=k_max)
-            .map(|k| {
-                let p = KMeansParams { k, ..p.clone() };
-                Ok(KMeans::fit(space, &p)?.labels)
-            })
-            .collect(),
+        Method::KMeans(p) => kmeans_partitions(space, p, k_max),
     }
 }
 
@@ -267,6 +288,52 @@ fn log_w(space: &Space, labels: &[Vec<i32>]) -> Vec<f64> {
         .collect()
 }
 
+/// The largest K tried on `n` scans, after checking `params`.
+fn k_max(n: usize, params: &ChooseKParams) -> Result<usize> {
+    if n == 0 {
+        return invalid("no scans to choose categories for");
+    }
+    if params.max_k == 0 || params.references == 0 || params.reference_size == 0 {
+        return invalid("max_k, references and reference_size must be at least 1");
+    }
+    Ok(params.max_k.min(n))
+}
+
+/// log(W*_K / m) for K = 1..=k_max of the gap statistic's reference sets
+/// `which` (numbers below `params.references`), in that order: the costly
+/// part of [`scores`] (a tree or k_max k-means runs per set), which needs
+/// no tree of the data, so that other threads can compute it in shares
+/// while the data's tree is built. [`scores_with_references`] takes every
+/// set's, in order; the result is the same, bit for bit, as [`scores`]'s.
+pub fn reference_log_w(
+    space: &Space,
+    method: Method,
+    params: &ChooseKParams,
+    which: &[usize],
+) -> Result<Vec<Vec<f64>>> {
+    let n = space.len();
+    let k_max = k_max(n, params)?;
+    let m = params.reference_size.min(n);
+    which
+        .iter()
+        .map(|&b| {
+            if b >= params.references {
+                return invalid(format!(
+                    "reference set {b} asked for, of {} (0 to {})",
+                    params.references,
+                    params.references - 1
+                ));
+            }
+            let seed = params.seed.wrapping_add(1 + b as u64);
+            let reference = gap::reference(space, m, seed);
+            Ok(log_w(
+                &reference,
+                &reference_partitions(&reference, method, k_max)?,
+            ))
+        })
+        .collect()
+}
+
 /// Every rule's scores (the gap statistic's reference sets are the costly
 /// part: B trees or B x k_max k-means runs on `reference_size` scans).
 pub fn scores(
@@ -275,13 +342,21 @@ pub fn scores(
     clusterer: Clusterer,
     params: &ChooseKParams,
 ) -> Result<Scores> {
+    check_sizes(space, matrix, clusterer, params)?;
+    let all: Vec<usize> = (0..params.references).collect();
+    let references = reference_log_w(space, clusterer.method(), params, &all)?;
+    scores_with_references(space, matrix, clusterer, params, &references)
+}
+
+/// `n`, after checking that the tree and matrix are of the space's scans.
+fn check_sizes(
+    space: &Space,
+    matrix: Option<&DistanceMatrix>,
+    clusterer: Clusterer,
+    params: &ChooseKParams,
+) -> Result<usize> {
     let n = space.len();
-    if n == 0 {
-        return invalid("no scans to choose categories for");
-    }
-    if params.max_k == 0 || params.references == 0 || params.reference_size == 0 {
-        return invalid("max_k, references and reference_size must be at least 1");
-    }
+    k_max(n, params)?;
     let tree_n = match clusterer {
         Clusterer::Tree(t, _) => t.n,
         Clusterer::KMeans(_) => n,
@@ -292,22 +367,42 @@ pub fn scores(
             "{n} scans, a Delta matrix of {matrix_n} and a tree of {tree_n}"
         )));
     }
+    Ok(n)
+}
+
+/// [`scores`] with the reference sets' log(W*_K / m) computed beforehand
+/// (by [`reference_log_w`], every set in order, for the same space, method
+/// and `params`); refused unless there are `params.references` of k_max values.
+pub fn scores_with_references(
+    space: &Space,
+    matrix: Option<&DistanceMatrix>,
+    clusterer: Clusterer,
+    params: &ChooseKParams,
+    references: &[Vec<f64>],
+) -> Result<Scores> {
+    let n = check_sizes(space, matrix, clusterer, params)?;
     let k_max = params.max_k.min(n);
-    let labels = partitions(space, clusterer, k_max, false)?;
+    if references.len() != params.references || references.iter().any(|r| r.len() != k_max) {
+        let short = references.iter().map(Vec::len).min().unwrap_or(0);
+        let long = references.iter().map(Vec::len).max().unwrap_or(0);
+        let values = if short == long {
+            short.to_string()
+        } else {
+            format!("{short} to {long}")
+        };
+        return Err(crate::Error::Mismatch(format!(
+            "{} reference sets of {values} values given, {} of {k_max} (K = 1 to {k_max}) expected",
+            references.len(),
+            params.references
+        )));
+    }
+    let labels = match clusterer {
+        Clusterer::Tree(t, _) => cuts(t, k_max)?,
+        Clusterer::KMeans(p) => kmeans_partitions(space, p, k_max)?,
+    };
     let silhouette = silhouettes(space, matrix, &labels, params);
     let log_w_data = log_w(space, &labels);
-    let m = params.reference_size.min(n);
-    let references = (0..params.references)
-        .map(|b| {
-            let seed = params.seed.wrapping_add(1 + b as u64);
-            let reference = gap::reference(space, m, seed);
-            Ok(log_w(
-                &reference,
-                &partitions(&reference, clusterer, k_max, true)?,
-            ))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let (mut gap, mut gap_s) = gap::gaps(&log_w_data, &references);
+    let (mut gap, mut gap_s) = gap::gaps(&log_w_data, references);
     // K = n makes W_n = 0 (log -inf): the gap says nothing there, and
     // with two scans it would always say two.
     gap.truncate((n - 1).max(1));
