@@ -36,6 +36,13 @@ let matrixOf = null;
  * @type {{set: State['set'], seed: number, dispersions: Promise<Float64Array | null>} | null}
  */
 let references = null;
+/**
+ * A cut the user asked for before the tree existed (while the scans were
+ * described or the workers computed the matrix): the next tree is cut so,
+ * not by the automatic choice. A new run forgets it.
+ * @type {{how: {k: number} | {threshold: number}, by: State['cutBy']} | null}
+ */
+let askedCut = null;
 /** Whether the pool works for the page's run (describing, its Delta matrix or its reference sets). */
 const poolBusy = () => state.running || matrixOf !== null;
 /** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
@@ -139,6 +146,7 @@ function startDemo(scene) {
  */
 async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false, fromFiles = false } = {}) {
   if (poolBusy()) pool.cancel();
+  askedCut = null;
   clearStages(fromFiles ? ['placecat:files'] : []);
   let params;
   try {
@@ -270,7 +278,10 @@ async function cluster() {
     if (m.method === 'hkmeans') {
       const next = S.nextCut(state);
       state = S.withTree(state, stage('tree', () => engine.hkmeans(m.hkSeed)));
-      if (!('auto' in next)) return cutTree(next);
+      const asked = askedCut;
+      askedCut = null;
+      if (asked) cutTree(asked.how, asked.by);
+      if (!('auto' in next)) return asked ? undefined : cutTree(next);
       const start = performance.now();
       const tree = state.tree;
       const pending = workersDispersions(m.hkSeed);
@@ -278,6 +289,8 @@ async function cluster() {
       if (state.tree !== tree) return; // clustered again meanwhile
       state = S.withFirstCut(state, engine.suggestCategories(dispersions));
       stageSince('choose', start); // with the wait for the workers
+      // The user cut the tree meanwhile (or before it existed): their cut stays; the choice is only recorded.
+      if (state.cut) return render();
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);
@@ -293,7 +306,10 @@ async function cluster() {
  * @param {{k: number} | {threshold: number}} how @param {State['cutBy']} [by] what the user set */
 function cutTree(how, by) {
   if (by) state = S.withCutBy(state, by);
-  if (!state.tree) return;
+  if (!state.tree) {
+    if (by) askedCut = { how, by };
+    return;
+  }
   try {
     const cut = stage('cut', () => 'k' in how ? engine.cutK(S.clampCategories(state, how.k)) : engine.cut(how.threshold));
     state = S.withLabels(state, cut.labels, stage('medoids', () => engine.medoids(cut.labels)), cut);
