@@ -24,12 +24,12 @@ const TICK_MS = 200;
 const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
 /**
- * The run (state.run) whose Delta matrix or reference sets the workers
- * compute, if any: its describing is over (state.running is false) but the
+ * The run (state.run) whose tail (Delta matrix, reference sets) the workers
+ * compute, until its last task settled: its describing is over (state.running is false) but the
  * pool still works for it, so a new run or Cancel must cancel the pool then too.
  * @type {number | null}
  */
-let matrixOf = null;
+let tailOf = null;
 /**
  * The reference sets of the choice of categories that the workers compute
  * for a set (state.set) and a tree seed (matrix.js); null where they failed.
@@ -44,7 +44,7 @@ let references = null;
  */
 let askedCut = null;
 /** Whether the pool works for the page's run (describing, its Delta matrix or its reference sets). */
-const poolBusy = () => state.running || matrixOf !== null;
+const poolBusy = () => state.running || tailOf !== null;
 /** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
 let unsaved = null;
 const engine = new Engine(wasm);
@@ -243,14 +243,21 @@ async function tailFromWorkers(current) {
   const jsons = state.scans.map((r) => r.descriptorJson);
   const key = tailKey();
   const m = view.method();
-  const matrix = state.set.usesMatrix ? matrixInWorkers(pool, params, jsons, key) : null;
+  // Every task of the tail, so that the pool counts as busy until the last
+  // settles: the matrix's or the reference sets' promise settles at the
+  // first failure, while the rest may still be queued (and then a Cancel or
+  // a new run would leave them queued, and wait behind them).
+  /** @type {Promise<unknown>[]} */
+  const tasks = [];
+  const tracked = { size: pool.size, run: (/** @type {any} */ task) => { const p = pool.run(task); tasks.push(p); return p; } };
+  const matrix = state.set.usesMatrix ? matrixInWorkers(tracked, params, jsons, key) : null;
   const dispersions = m.method === 'hkmeans' && 'auto' in S.nextCut(state)
-    ? referencesInWorkers(pool, params, jsons, { seed: m.hkSeed, sets: engine.referenceSets() }, key).catch(() => null)
+    ? referencesInWorkers(tracked, params, jsons, { seed: m.hkSeed, sets: engine.referenceSets() }, key).catch(() => null)
     : null;
   if (dispersions) references = { set: state.set, seed: m.hkSeed, dispersions };
   if (!matrix && !dispersions) return;
-  matrixOf = run;
-  Promise.all([matrix, dispersions]).catch(() => {}).finally(() => matrixOf === run && (matrixOf = null));
+  tailOf = run;
+  Promise.allSettled(tasks).then(() => tailOf === run && (tailOf = null));
   if (!matrix) return;
   try {
     const values = await matrix;

@@ -16,7 +16,7 @@ let tails = 0;
 export const tailKey = () => `tail ${++tails}`;
 
 /**
- * @param {import('./pool.js').WorkerPool} pool @param {import('./engine.js').Params} params
+ * @param {Pick<import('./pool.js').WorkerPool, 'size' | 'run'>} pool @param {import('./engine.js').Params} params
  * @param {string[]} descriptorJsons @param {string} [key] the tail's (tailKey)
  * @returns {Promise<Float32Array>} n x n, row-major
  */
@@ -47,7 +47,7 @@ export async function matrixInWorkers(pool, params, descriptorJsons, key = tailK
  * in order, for a tree of `seed`: what Engine.suggestCategories takes. One
  * task a set, so that a worker slowed by the page's tree (or by anything
  * else on the machine) takes fewer of them.
- * @param {import('./pool.js').WorkerPool} pool @param {import('./engine.js').Params} params
+ * @param {Pick<import('./pool.js').WorkerPool, 'size' | 'run'>} pool @param {import('./engine.js').Params} params
  * @param {string[]} descriptorJsons @param {{seed: number, sets: number}} choice the tree's seed and how many reference
  *   sets the choice draws (Engine.referenceSets) @param {string} [key] the tail's (tailKey)
  * @returns {Promise<Float64Array>}
