@@ -143,12 +143,20 @@ export class Engine {
    * default; one category when the scans are alike under the descriptor), and why.
    * `dispersions`: every reference set's, computed by the workers for this
    * set and the tree's seed (matrix.js); the same choice, not computed here.
+   * Dispersions the set refuses (too few, another set's) count as none: the
+   * set computes its own, as when the workers failed.
    * @param {Float64Array | null} [dispersions] @returns {{k: number, why: string}}
    */
   suggestCategories(dispersions) {
     const set = this.set.get('scans');
     const tree = this.tree.get('tree');
-    const choice = dispersions ? set.chooseCategoriesWith(tree, dispersions) : set.chooseCategories(tree);
+    let choice = null;
+    try {
+      if (dispersions) choice = set.chooseCategoriesWith(tree, dispersions);
+    } catch {
+      // refused: chosen below from the set's own reference sets
+    }
+    choice ??= set.chooseCategories(tree);
     return { k: choice.k, why: choiceReason(choice) };
   }
 
