@@ -15,7 +15,7 @@ import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince, clearStages } from './stages.js';
-import { matrixInWorkers, referencesInWorkers, tailKey } from './matrix.js';
+import { matrixInWorkers, referencesInWorkers, tailKey, oneAtATime } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
 /** How often a run shows its progress and saves its results (ms). */
@@ -57,12 +57,13 @@ const engine = new Engine(wasm);
 // machine), three descriptions' time. Memory: at most four files a worker,
 // and more than one only while they total 32 MB (large scans, e.g. 1M
 // points, are held one at a time). A bag (or the listing of its topics)
-// has a worker to itself and reads the bag itself, in slices.
+// has a worker to itself and reads the bag itself, in slices; a reference
+// set of the tail is held alone too, so that it goes to a free worker (matrix.js).
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
   depth: 4,
   bytes: (task) => task.file?.size ?? 0,
   maxBytes: 32 * 2 ** 20,
-  alone: (task) => task.type === 'bag' || task.type === 'bagTopics',
+  alone: (task) => task.type === 'bag' || task.type === 'bagTopics' || oneAtATime(task),
   prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
     : null,
