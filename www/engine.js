@@ -259,9 +259,15 @@ export function scanResult(scan) {
 }
 
 export class Describer {
-  /** @param {Wasm} wasm */
-  constructor(wasm) {
+  /**
+   * @param {Wasm} wasm @param {{tailIdleMs?: number}} [how] `tailIdleMs`: how long the set of a tail is kept
+   *   after its last task (the next comes within a message's round trip, or once the page's tree is built)
+   */
+  constructor(wasm, { tailIdleMs = 5000 } = {}) {
     this.wasm = wasm;
+    this.tailIdleMs = tailIdleMs;
+    /** @type {ReturnType<typeof setTimeout> | undefined} */
+    this.tailTimer = undefined;
     /** @type {Slot<import('./pkg/placecat.js').Simulator>} */
     this.simulator = new Slot();
     this.simKey = '';
@@ -302,7 +308,7 @@ export class Describer {
    * @param {string} key @param {Params} params @param {string[]} descriptorJsons @param {number[]} rows @returns {Float32Array}
    */
   deltaRows(key, params, descriptorJsons, rows) {
-    return this.tailSet(key, params, descriptorJsons).deltaRows(Uint32Array.from(rows));
+    return this.#keepTail(this.tailSet(key, params, descriptorJsons).deltaRows(Uint32Array.from(rows)));
   }
 
   /**
@@ -312,7 +318,33 @@ export class Describer {
    * @returns {Float64Array}
    */
   referenceDispersions(key, params, descriptorJsons, seed, which) {
-    return this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which));
+    return this.#keepTail(this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which)));
+  }
+
+  /**
+   * A task comes (worker.js): one that is not a tail's ends the tail, so
+   * its set (the descriptors of every scan) is not held beside a new run.
+   * @param {string} type the task's
+   */
+  taskArrives(type) {
+    if (type !== 'deltaRows' && type !== 'references') this.endTail();
+  }
+
+  /** Free the set of the tail, if any. */
+  endTail() {
+    clearTimeout(this.tailTimer);
+    this.set.clear();
+    this.setKey = '';
+  }
+
+  /**
+   * After a tail's task: the tail has ended when no other of its tasks
+   * comes within tailIdleMs. @template R @param {R} result @returns {R}
+   */
+  #keepTail(result) {
+    clearTimeout(this.tailTimer);
+    this.tailTimer = setTimeout(() => this.endTail(), this.tailIdleMs);
+    return result;
   }
 
   /** The share of a scan's points beyond 10 m (all its points, not the preview). @param {Uint8Array} bytes @param {string} name */
@@ -368,6 +400,6 @@ export class Describer {
   dispose() {
     this.simulator.clear();
     this.model.clear();
-    this.set.clear();
+    this.endTail();
   }
 }

@@ -280,3 +280,22 @@ test('the choice\'s reference sets from the workers\' shares (matrix.js) give th
   for (const d of workers) d.dispose();
   e.dispose();
 });
+
+test('a worker frees the set of a tail when a task of another kind comes, or when no task of the tail came for a while', async () => {
+  const jsons = scans.slice(0, 20).map((s) => s.descriptorJson);
+  const d = new Describer(wasm, { tailIdleMs: 50 });
+  const key = 'tail 1';
+  assert.equal(d.deltaRows(key, params, jsons, [0]).length, 19);
+  assert.ok(d.set.value, 'kept for the tail\'s next task');
+  d.taskArrives('references');
+  assert.ok(d.set.value, 'a task of the tail keeps it');
+  d.taskArrives('describe');
+  assert.equal(d.set.value, null, 'a describe task frees it');
+  d.referenceDispersions(key, params, jsons, 0, [0]);
+  assert.ok(d.set.value);
+  await new Promise((ok) => setTimeout(ok, 20));
+  assert.ok(d.set.value, 'kept between two tasks');
+  await new Promise((ok) => setTimeout(ok, 100));
+  assert.equal(d.set.value, null, 'freed once no task came for 50 ms');
+  d.dispose();
+});
