@@ -295,7 +295,7 @@ async function cluster() {
       const pending = workersDispersions(m.hkSeed);
       const dispersions = pending && (await pending);
       if (state.tree !== tree) return; // clustered again meanwhile
-      state = S.withFirstCut(state, engine.suggestCategories(dispersions));
+      state = S.withFirstCut(state, engine.suggestCategories(dispersions, m.hkSeed));
       stageSince('choose', start); // with the wait for the workers
       // The user cut the tree meanwhile (or before it existed): their cut stays; the choice is only recorded.
       if (state.cut) return render();

@@ -145,14 +145,15 @@ export class Engine {
    * set and the tree's seed (matrix.js); the same choice, not computed here.
    * Dispersions the set refuses (too few, another set's) count as none: the
    * set computes its own, as when the workers failed.
-   * @param {Float64Array | null} [dispersions] @returns {{k: number, why: string}}
+   * @param {Float64Array | null} [dispersions] @param {number} [seed] the tree seed they were drawn for
+   * @returns {{k: number, why: string}}
    */
-  suggestCategories(dispersions) {
+  suggestCategories(dispersions, seed = 0) {
     const set = this.set.get('scans');
     const tree = this.tree.get('tree');
     let choice = null;
     try {
-      if (dispersions) choice = set.chooseCategoriesWith(tree, dispersions);
+      if (dispersions) choice = set.chooseCategoriesWith(tree, dispersions, seed);
     } catch {
       // refused: chosen below from the set's own reference sets
     }

@@ -267,11 +267,14 @@ test('the choice\'s reference sets from the workers\' shares (matrix.js) give th
   assert.ok(dispersions.every(Number.isFinite) && dispersions[0] !== dispersions[10], 'each set its own draw');
   e.hkmeans(0);
   const choice = e.set.get('scans').chooseCategories(e.tree.get('tree'));
-  assert.deepEqual(e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions), choice);
+  assert.deepEqual(e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions, 0), choice);
+  // Drawn for another seed's tree: refused, and the page chooses without them.
+  assert.throws(() => e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions, 1), /seed 1, this tree's is 0/);
+  assert.deepEqual(e.suggestCategories(dispersions, 1), e.suggestCategories());
   assert.deepEqual(e.suggestCategories(dispersions), e.suggestCategories());
   assert.equal(e.suggestCategories(dispersions).k, 3);
   // A share missing is refused, naming what was expected; the page then chooses without them, as when the workers failed.
-  assert.throws(() => e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions.subarray(10)), /9 reference sets .*10 of 10/);
+  assert.throws(() => e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions.subarray(10), 0), /9 reference sets .*10 of 10/);
   assert.deepEqual(e.suggestCategories(dispersions.subarray(10)), e.suggestCategories());
   assert.equal(e.suggestCategories(dispersions.subarray(10)).k, 3);
   // Another tail's key builds the set again (its two tasks come to workers 1 and 2, in turn).
