@@ -15,7 +15,7 @@ import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince, clearStages } from './stages.js';
-import { matrixInWorkers, referencesInWorkers, tailKey } from './matrix.js';
+import { matrixInWorkers, referencesInWorkers, tailKey, oneAtATime } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
 /** How often a run shows its progress and saves its results (ms). */
@@ -24,20 +24,27 @@ const TICK_MS = 200;
 const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
 /**
- * The run (state.run) whose Delta matrix or reference sets the workers
- * compute, if any: its describing is over (state.running is false) but the
+ * The run (state.run) whose tail (Delta matrix, reference sets) the workers
+ * compute, until its last task settled: its describing is over (state.running is false) but the
  * pool still works for it, so a new run or Cancel must cancel the pool then too.
  * @type {number | null}
  */
-let matrixOf = null;
+let tailOf = null;
 /**
  * The reference sets of the choice of categories that the workers compute
  * for a set (state.set) and a tree seed (matrix.js); null where they failed.
  * @type {{set: State['set'], seed: number, dispersions: Promise<Float64Array | null>} | null}
  */
 let references = null;
+/**
+ * A cut the user asked for before the tree existed (while the scans were
+ * described or the workers computed the matrix): the next tree is cut so,
+ * not by the automatic choice. A new run forgets it.
+ * @type {{how: {k: number} | {threshold: number}, by: State['cutBy']} | null}
+ */
+let askedCut = null;
 /** Whether the pool works for the page's run (describing, its Delta matrix or its reference sets). */
-const poolBusy = () => state.running || matrixOf !== null;
+const poolBusy = () => state.running || tailOf !== null;
 /** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
 let unsaved = null;
 const engine = new Engine(wasm);
@@ -50,12 +57,13 @@ const engine = new Engine(wasm);
 // machine), three descriptions' time. Memory: at most four files a worker,
 // and more than one only while they total 32 MB (large scans, e.g. 1M
 // points, are held one at a time). A bag (or the listing of its topics)
-// has a worker to itself and reads the bag itself, in slices.
+// has a worker to itself and reads the bag itself, in slices; a reference
+// set of the tail is held alone too, so that it goes to a free worker (matrix.js).
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
   depth: 4,
   bytes: (task) => task.file?.size ?? 0,
   maxBytes: 32 * 2 ** 20,
-  alone: (task) => task.type === 'bag' || task.type === 'bagTopics',
+  alone: (task) => task.type === 'bag' || task.type === 'bagTopics' || oneAtATime(task),
   prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
     : null,
@@ -139,6 +147,7 @@ function startDemo(scene) {
  */
 async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false, fromFiles = false } = {}) {
   if (poolBusy()) pool.cancel();
+  askedCut = null;
   clearStages(fromFiles ? ['placecat:files'] : []);
   let params;
   try {
@@ -235,14 +244,21 @@ async function tailFromWorkers(current) {
   const jsons = state.scans.map((r) => r.descriptorJson);
   const key = tailKey();
   const m = view.method();
-  const matrix = state.set.usesMatrix ? matrixInWorkers(pool, params, jsons, key) : null;
+  // Every task of the tail, so that the pool counts as busy until the last
+  // settles: the matrix's or the reference sets' promise settles at the
+  // first failure, while the rest may still be queued (and then a Cancel or
+  // a new run would leave them queued, and wait behind them).
+  /** @type {Promise<unknown>[]} */
+  const tasks = [];
+  const tracked = { size: pool.size, run: (/** @type {any} */ task) => { const p = pool.run(task); tasks.push(p); return p; } };
+  const matrix = state.set.usesMatrix ? matrixInWorkers(tracked, params, jsons, key) : null;
   const dispersions = m.method === 'hkmeans' && 'auto' in S.nextCut(state)
-    ? referencesInWorkers(pool, params, jsons, { seed: m.hkSeed, sets: engine.referenceSets() }, key).catch(() => null)
+    ? referencesInWorkers(tracked, params, jsons, { seed: m.hkSeed, sets: engine.referenceSets() }, key).catch(() => null)
     : null;
   if (dispersions) references = { set: state.set, seed: m.hkSeed, dispersions };
   if (!matrix && !dispersions) return;
-  matrixOf = run;
-  Promise.all([matrix, dispersions]).catch(() => {}).finally(() => matrixOf === run && (matrixOf = null));
+  tailOf = run;
+  Promise.allSettled(tasks).then(() => tailOf === run && (tailOf = null));
   if (!matrix) return;
   try {
     const values = await matrix;
@@ -270,14 +286,19 @@ async function cluster() {
     if (m.method === 'hkmeans') {
       const next = S.nextCut(state);
       state = S.withTree(state, stage('tree', () => engine.hkmeans(m.hkSeed)));
-      if (!('auto' in next)) return cutTree(next);
+      const asked = askedCut;
+      askedCut = null;
+      if (asked) cutTree(asked.how, asked.by);
+      if (!('auto' in next)) return asked ? undefined : cutTree(next);
       const start = performance.now();
       const tree = state.tree;
       const pending = workersDispersions(m.hkSeed);
       const dispersions = pending && (await pending);
       if (state.tree !== tree) return; // clustered again meanwhile
-      state = S.withFirstCut(state, engine.suggestCategories(dispersions));
+      state = S.withFirstCut(state, engine.suggestCategories(dispersions, m.hkSeed));
       stageSince('choose', start); // with the wait for the workers
+      // The user cut the tree meanwhile (or before it existed): their cut stays; the choice is only recorded.
+      if (state.cut) return render();
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);
@@ -293,7 +314,10 @@ async function cluster() {
  * @param {{k: number} | {threshold: number}} how @param {State['cutBy']} [by] what the user set */
 function cutTree(how, by) {
   if (by) state = S.withCutBy(state, by);
-  if (!state.tree) return;
+  if (!state.tree) {
+    if (by) askedCut = { how, by };
+    return;
+  }
   try {
     const cut = stage('cut', () => 'k' in how ? engine.cutK(S.clampCategories(state, how.k)) : engine.cut(how.threshold));
     state = S.withLabels(state, cut.labels, stage('medoids', () => engine.medoids(cut.labels)), cut);

@@ -143,12 +143,21 @@ export class Engine {
    * default; one category when the scans are alike under the descriptor), and why.
    * `dispersions`: every reference set's, computed by the workers for this
    * set and the tree's seed (matrix.js); the same choice, not computed here.
-   * @param {Float64Array | null} [dispersions] @returns {{k: number, why: string}}
+   * Dispersions the set refuses (too few, another set's) count as none: the
+   * set computes its own, as when the workers failed.
+   * @param {Float64Array | null} [dispersions] @param {number} [seed] the tree seed they were drawn for
+   * @returns {{k: number, why: string}}
    */
-  suggestCategories(dispersions) {
+  suggestCategories(dispersions, seed = 0) {
     const set = this.set.get('scans');
     const tree = this.tree.get('tree');
-    const choice = dispersions ? set.chooseCategoriesWith(tree, dispersions) : set.chooseCategories(tree);
+    let choice = null;
+    try {
+      if (dispersions) choice = set.chooseCategoriesWith(tree, dispersions, seed);
+    } catch {
+      // refused: chosen below from the set's own reference sets
+    }
+    choice ??= set.chooseCategories(tree);
     return { k: choice.k, why: choiceReason(choice) };
   }
 
@@ -251,9 +260,15 @@ export function scanResult(scan) {
 }
 
 export class Describer {
-  /** @param {Wasm} wasm */
-  constructor(wasm) {
+  /**
+   * @param {Wasm} wasm @param {{tailIdleMs?: number}} [how] `tailIdleMs`: how long the set of a tail is kept
+   *   after its last task (the next comes within a message's round trip, or once the page's tree is built)
+   */
+  constructor(wasm, { tailIdleMs = 5000 } = {}) {
     this.wasm = wasm;
+    this.tailIdleMs = tailIdleMs;
+    /** @type {ReturnType<typeof setTimeout> | undefined} */
+    this.tailTimer = undefined;
     /** @type {Slot<import('./pkg/placecat.js').Simulator>} */
     this.simulator = new Slot();
     this.simKey = '';
@@ -294,7 +309,7 @@ export class Describer {
    * @param {string} key @param {Params} params @param {string[]} descriptorJsons @param {number[]} rows @returns {Float32Array}
    */
   deltaRows(key, params, descriptorJsons, rows) {
-    return this.tailSet(key, params, descriptorJsons).deltaRows(Uint32Array.from(rows));
+    return this.#keepTail(this.tailSet(key, params, descriptorJsons).deltaRows(Uint32Array.from(rows)));
   }
 
   /**
@@ -304,7 +319,33 @@ export class Describer {
    * @returns {Float64Array}
    */
   referenceDispersions(key, params, descriptorJsons, seed, which) {
-    return this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which));
+    return this.#keepTail(this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which)));
+  }
+
+  /**
+   * A task comes (worker.js): one that is not a tail's ends the tail, so
+   * its set (the descriptors of every scan) is not held beside a new run.
+   * @param {string} type the task's
+   */
+  taskArrives(type) {
+    if (type !== 'deltaRows' && type !== 'references') this.endTail();
+  }
+
+  /** Free the set of the tail, if any. */
+  endTail() {
+    clearTimeout(this.tailTimer);
+    this.set.clear();
+    this.setKey = '';
+  }
+
+  /**
+   * After a tail's task: the tail has ended when no other of its tasks
+   * comes within tailIdleMs. @template R @param {R} result @returns {R}
+   */
+  #keepTail(result) {
+    clearTimeout(this.tailTimer);
+    this.tailTimer = setTimeout(() => this.endTail(), this.tailIdleMs);
+    return result;
   }
 
   /** The share of a scan's points beyond 10 m (all its points, not the preview). @param {Uint8Array} bytes @param {string} name */
@@ -360,6 +401,6 @@ export class Describer {
   dispose() {
     this.simulator.clear();
     this.model.clear();
-    this.set.clear();
+    this.endTail();
   }
 }

@@ -9,6 +9,17 @@
 // the choice 0.4 s, while the workers stood idle. A worker keeps the set
 // it built for the first task of a tail (`key`): it reads the descriptors once.
 
+/**
+ * The tasks a worker holds one at a time (the pool's `alone`): a reference
+ * set. The pool hands a worker several tasks at once (app.js: four), so a
+ * worker would take its rows and the next three sets together and keep
+ * them however slow it turns out; held one at a time, a set goes to
+ * whichever worker comes free (a set takes tens of ms, a message's round
+ * trip well under one).
+ * @param {{type?: string}} task
+ */
+export const oneAtATime = (task) => task.type === 'references';
+
 /** Tails started by this page: the tasks of one share a key. */
 let tails = 0;
 
@@ -16,7 +27,7 @@ let tails = 0;
 export const tailKey = () => `tail ${++tails}`;
 
 /**
- * @param {import('./pool.js').WorkerPool} pool @param {import('./engine.js').Params} params
+ * @param {Pick<import('./pool.js').WorkerPool, 'size' | 'run'>} pool @param {import('./engine.js').Params} params
  * @param {string[]} descriptorJsons @param {string} [key] the tail's (tailKey)
  * @returns {Promise<Float32Array>} n x n, row-major
  */
@@ -45,9 +56,9 @@ export async function matrixInWorkers(pool, params, descriptorJsons, key = tailK
 /**
  * Every reference set's dispersions (DescriptorSet.referenceDispersions),
  * in order, for a tree of `seed`: what Engine.suggestCategories takes. One
- * task a set, so that a worker slowed by the page's tree (or by anything
- * else on the machine) takes fewer of them.
- * @param {import('./pool.js').WorkerPool} pool @param {import('./engine.js').Params} params
+ * task a set, each held alone (oneAtATime), so that a worker slowed by the
+ * page's tree (or by anything else on the machine) takes fewer of them.
+ * @param {Pick<import('./pool.js').WorkerPool, 'size' | 'run'>} pool @param {import('./engine.js').Params} params
  * @param {string[]} descriptorJsons @param {{seed: number, sets: number}} choice the tree's seed and how many reference
  *   sets the choice draws (Engine.referenceSets) @param {string} [key] the tail's (tailKey)
  * @returns {Promise<Float64Array>}

@@ -22,6 +22,7 @@ const now = () => performance.timeOrigin + performance.now();
  */
 async function run(task, partial, clock, file) {
   const describer = await ready;
+  describer.taskArrives(task.type);
   if (task.type === 'bag') return describeBag(wasm, task, partial);
   if (task.type === 'bagTopics') return bagTopics(wasm, task.file, task.name);
   if (task.type === 'describe') {

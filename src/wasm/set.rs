@@ -130,7 +130,7 @@ impl DescriptorSet {
     /// `usesMatrix`): heights of nodes over 1500 scans are then an upper
     /// bound of the diameter.
     pub fn hkmeans(&mut self, seed: u32) -> WasmResult<ClusterTree> {
-        let params = HkMeansParams::new(seed.into());
+        let params = tree_params(seed);
         Ok(ClusterTree {
             tree: self.set.hkmeans(&params)?,
             params,
@@ -157,7 +157,7 @@ impl DescriptorSet {
         which: &[u32],
     ) -> WasmResult<js_sys::Float64Array> {
         let which: Vec<usize> = which.iter().map(|&b| b as usize).collect();
-        let tree = HkMeansParams::new(seed.into());
+        let tree = tree_params(seed);
         let how = choose_k::Method::Tree(&tree);
         let sets = self.set.reference_log_w(how, &Default::default(), &which)?;
         Ok(js_sys::Float64Array::from(&sets.concat()[..]))
@@ -168,15 +168,25 @@ impl DescriptorSet {
         choose_k::ChooseKParams::default().references
     }
     /// `chooseCategories(tree)` with the `referenceDispersions` of every
-    /// reference set, in order, one after the other (computed with `tree`'s
-    /// seed by a set of the same descriptors in the same order, e.g. in
-    /// workers): the same choice, bit for bit, without computing them here.
+    /// reference set, in order, one after the other (computed with `seed`,
+    /// which must be `tree`'s, by a set of the same descriptors in the same
+    /// order, e.g. in workers): the same choice, bit for bit, without
+    /// computing them here. Dispersions of another seed are an Error: they
+    /// would give another choice than `chooseCategories`.
     #[wasm_bindgen(js_name = chooseCategoriesWith, unchecked_return_type = "Choice")]
     pub fn choose_categories_with(
         &mut self,
         tree: &ClusterTree,
         dispersions: &[f64],
+        seed: u32,
     ) -> WasmResult<JsValue> {
+        if tree_params(seed) != tree.params {
+            return Err(Error::Mismatch(format!(
+                "reference sets drawn for a tree of seed {seed}, this tree's is {}",
+                tree.params.seed
+            ))
+            .into());
+        }
         let params = choose_k::ChooseKParams::default();
         let per_set = params.max_k.min(self.set.len()).max(1);
         let sets: Vec<Vec<f64>> = dispersions.chunks(per_set).map(<[f64]>::to_vec).collect();
@@ -236,4 +246,11 @@ impl DescriptorSet {
             model: self.set.build_model(labels, &names_from_js(names)?)?,
         })
     }
+}
+
+/// The hierarchical k-means++ parameters of a tree of `seed`: the same for
+/// the page's tree (`hkmeans`) and for the reference sets of its choice
+/// (`referenceDispersions`), which must be built alike.
+fn tree_params(seed: u32) -> HkMeansParams {
+    HkMeansParams::new(seed.into())
 }

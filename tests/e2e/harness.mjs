@@ -62,6 +62,8 @@ function dieOnFile() {
  * worker handed a Delta-matrix task (deltaRows) gets it that many ms late
  * and everything posted to it after that, after it: a slow matrix step
  * that keeps its worker busy. globalThis.deltaRowsHeld counts the tasks held.
+ * globalThis.holdTaskType holds tasks of another type instead (e.g.
+ * 'references': the choice's reference sets, after the matrix).
  */
 function holdDeltaRows() {
   const post = Worker.prototype.postMessage;
@@ -70,7 +72,7 @@ function holdDeltaRows() {
   /** @this {Worker} */
   Worker.prototype.postMessage = function (message, ...rest) {
     const ms = globalThis.holdDeltaRowsMs;
-    const matrix = message?.task?.type === 'deltaRows';
+    const matrix = message?.task?.type === (globalThis.holdTaskType || 'deltaRows');
     if (!ms || (!matrix && !behind.has(this))) return post.call(this, message, ...rest);
     if (matrix) globalThis.deltaRowsHeld = (globalThis.deltaRowsHeld || 0) + 1;
     const wait = matrix ? new Promise((ok) => setTimeout(ok, ms)) : Promise.resolve();

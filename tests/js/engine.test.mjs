@@ -267,14 +267,38 @@ test('the choice\'s reference sets from the workers\' shares (matrix.js) give th
   assert.ok(dispersions.every(Number.isFinite) && dispersions[0] !== dispersions[10], 'each set its own draw');
   e.hkmeans(0);
   const choice = e.set.get('scans').chooseCategories(e.tree.get('tree'));
-  assert.deepEqual(e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions), choice);
+  assert.deepEqual(e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions, 0), choice);
+  // Drawn for another seed's tree: refused, and the page chooses without them.
+  assert.throws(() => e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions, 1), /seed 1, this tree's is 0/);
+  assert.deepEqual(e.suggestCategories(dispersions, 1), e.suggestCategories());
   assert.deepEqual(e.suggestCategories(dispersions), e.suggestCategories());
   assert.equal(e.suggestCategories(dispersions).k, 3);
-  // A share missing is refused, naming what was expected.
-  assert.throws(() => e.suggestCategories(dispersions.subarray(10)), /9 reference sets .*10 of 10/);
+  // A share missing is refused, naming what was expected; the page then chooses without them, as when the workers failed.
+  assert.throws(() => e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions.subarray(10), 0), /9 reference sets .*10 of 10/);
+  assert.deepEqual(e.suggestCategories(dispersions.subarray(10)), e.suggestCategories());
+  assert.equal(e.suggestCategories(dispersions.subarray(10)).k, 3);
   // Another tail's key builds the set again (its two tasks come to workers 1 and 2, in turn).
   await referencesInWorkers(pool, params, jsons.slice(0, 20), { seed: 0, sets: 2 }, tailKey());
   assert.deepEqual(built, [1, 2, 2]);
   for (const d of workers) d.dispose();
   e.dispose();
+});
+
+test('a worker frees the set of a tail when a task of another kind comes, or when no task of the tail came for a while', async () => {
+  const jsons = scans.slice(0, 20).map((s) => s.descriptorJson);
+  const d = new Describer(wasm, { tailIdleMs: 50 });
+  const key = 'tail 1';
+  assert.equal(d.deltaRows(key, params, jsons, [0]).length, 19);
+  assert.ok(d.set.value, 'kept for the tail\'s next task');
+  d.taskArrives('references');
+  assert.ok(d.set.value, 'a task of the tail keeps it');
+  d.taskArrives('describe');
+  assert.equal(d.set.value, null, 'a describe task frees it');
+  d.referenceDispersions(key, params, jsons, 0, [0]);
+  assert.ok(d.set.value);
+  await new Promise((ok) => setTimeout(ok, 20));
+  assert.ok(d.set.value, 'kept between two tasks');
+  await new Promise((ok) => setTimeout(ok, 100));
+  assert.equal(d.set.value, null, 'freed once no task came for 50 ms');
+  d.dispose();
 });

@@ -103,14 +103,21 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     let all: Vec<f64> = (0..10)
         .flat_map(|b| [&even, &odd][b % 2][b / 2 * 6..b / 2 * 6 + 6].to_vec())
         .collect();
-    let with = set.choose_categories_with(&tree, &all).unwrap();
+    let with = set.choose_categories_with(&tree, &all, 2).unwrap();
     let own = set.choose_categories(&tree).unwrap();
     assert_eq!(
         js_sys::JSON::stringify(&with).unwrap(),
         js_sys::JSON::stringify(&own).unwrap()
     );
-    let e = message(set.choose_categories_with(&tree, &all[6..]).err().unwrap());
+    let e = message(
+        set.choose_categories_with(&tree, &all[6..], 2)
+            .err()
+            .unwrap(),
+    );
     assert!(e.contains("9 reference sets"), "{e}");
+    // Drawn for a tree of another seed: refused, not another choice.
+    let e = message(set.choose_categories_with(&tree, &all, 3).err().unwrap());
+    assert!(e.contains("seed 3, this tree's is 2"), "{e}");
     let e = message(other.reference_dispersions(2, &[10]).err().unwrap());
     assert!(e.contains("reference set 10 asked for, of 10"), "{e}");
 }
