@@ -7,8 +7,8 @@
 //!
 //!     cargo run --release --example parts_dev -- [--seeds 1,2,3] [--scans N] [--only NAME] [WEIGHTS...]
 //!
-//! WEIGHTS: `ndt,height_range,slice,esf,ring,clutter` (e.g.
-//! `1,0,5,5,5,0`); without any, a fixed list. The office and school floors
+//! WEIGHTS: `ndt,height_range,slice,esf,ring,clutter,m2dp` (e.g.
+//! `1,0,5,5,5,0,0`); without any, a fixed list. The office and school floors
 //! (9 scans a kind, 3 a room, as in `examples/descriptors.rs`) score 1-NN
 //! with no neighbour from the scan's own room. Never run on test seeds:
 //! every seed of the test column of docs/seeds.md is refused.
@@ -72,7 +72,15 @@ fn test_seeds() -> Res<Vec<u64>> {
     }
     // Those known when this was written, in case the file read is an older
     // one (401-405: issue 14's third round, on another branch then).
-    for range in [101..=105, 201..=205, 301..=305, 311..=315, 401..=405] {
+    for range in [
+        101..=105,
+        201..=205,
+        301..=305,
+        311..=315,
+        321..=325,
+        401..=405,
+        501..=505,
+    ] {
         seeds.extend(range);
     }
     Ok(seeds)
@@ -202,7 +210,11 @@ fn main() -> Res<()> {
             "--only" => only = it.next().cloned(),
             w => {
                 let v: Vec<f32> = w.split(',').map(str::parse).collect::<Result<_, _>>()?;
-                weights.push(v.try_into().map_err(|_| "six weights")?);
+                weights.push(
+                    v.try_into().map_err(|_| {
+                        "seven weights: ndt,height_range,slice,esf,ring,clutter,m2dp"
+                    })?,
+                );
             }
         }
     }
@@ -212,12 +224,12 @@ fn main() -> Res<()> {
     }
     if weights.is_empty() {
         weights = vec![
-            [1., 0., 0., 0., 0., 0.],
-            [1., 0., 5., 5., 5., 0.],
-            [1., 0., 0., 0., 0., 5.],
-            [1., 0., 5., 5., 5., 5.],
-            [1., 0., 5., 0., 5., 5.],
-            [0., 0., 0., 0., 0., 10.],
+            [1., 0., 0., 0., 0., 0., 0.],
+            [1., 0., 5., 5., 5., 0., 0.],
+            [1., 0., 0., 0., 0., 5., 0.],
+            [1., 0., 5., 5., 5., 5., 0.],
+            [1., 0., 5., 0., 5., 5., 0.],
+            [0., 0., 0., 0., 0., 10., 0.],
         ];
     }
     for &seed in &seeds {
@@ -295,8 +307,8 @@ fn main() -> Res<()> {
             }
             println!("{counts:?}");
             println!(
-                "seed {seed} {:<16} n={} medians ndt {:.3} hr {:.3} slice {:.3} esf {:.3} ring {:.3} clutter {:.3}",
-                set.name, set.descriptors.len(), med[0], med[1], med[2], med[3], med[4], med[5]
+                "seed {seed} {:<16} n={} medians ndt {:.3} hr {:.3} slice {:.3} esf {:.3} ring {:.3} clutter {:.3} m2dp {:.4}",
+                set.name, set.descriptors.len(), med[0], med[1], med[2], med[3], med[4], med[5], med[6]
             );
             for w in &weights {
                 let (s, h, n) = score(set, w)?;
