@@ -10,6 +10,8 @@
 //!     ... -- --family outdoor  # one family's dev and test seeds again, its rows replaced
 //!     ... -- --round 2 --dev   # the second round (docs/seeds.md): dev seeds 1-6
 //!     ... -- --round 2         # its test seeds 311-315, run once: docs/descriptors-2.*
+//!     ... -- --round 3 --dev   # the third round (M2DP): dev seeds 1-6
+//!     ... -- --round 3         # its test seeds 321-325, run once: docs/descriptors-3.*
 //!
 //! The dev run chooses each family's new preset and is kept in its own
 //! file, so that the test run (which reads it) stays near 15 minutes.
@@ -46,7 +48,7 @@ type Res<T> = Result<T, Box<dyn std::error::Error>>;
 /// A round of the evaluation: its seeds, fixed in docs/seeds.md before
 /// any run of it, its files, and how it picks a family's new preset.
 struct Round {
-    /// 1 or 2.
+    /// 1, 2 or 3.
     number: u32,
     dev_seeds: &'static [u64],
     test_seeds: &'static [u64],
@@ -80,6 +82,18 @@ const SECOND: Round = Round {
     dev_file: "descriptors-dev-2.json",
     report_file: "descriptors-2.json",
     md_file: "descriptors-2.md",
+    tie_break: true,
+};
+
+/// The third round (M2DP; after 311-315 had been seen): dev seeds 1-6,
+/// fresh test seeds 321-325, round 2's tie-break.
+const THIRD: Round = Round {
+    number: 3,
+    dev_seeds: &[1, 2, 3, 4, 5, 6],
+    test_seeds: &[321, 322, 323, 324, 325],
+    dev_file: "descriptors-dev-3.json",
+    report_file: "descriptors-3.json",
+    md_file: "descriptors-3.md",
     tie_break: true,
 };
 
@@ -479,19 +493,58 @@ struct DevRun {
     seconds: f64,
 }
 
-/// Every preset of PRESETS: names and parameters.
-fn all_presets() -> Res<(Vec<&'static str>, Vec<DescriptorParams>)> {
-    let names = placecat::descriptor::preset_names();
-    let presets = names
+/// Round 3's trials: M2DP alone and beside the paper's and the best
+/// existing presets, at the weights its dev grid scored best (docs/parts.md,
+/// third round). They are no presets (the rule made none): run beside the
+/// presets so that M2DP's test figures are reported, never chosen.
+const TRIALS_3: [(&str, &str, f64, f64); 4] = [
+    ("m2dp_alone", "indoor", 0.0, 20.0),
+    ("indoor+m2dp", "indoor", 1.0, 20.0),
+    ("indoor_clutter+m2dp", "indoor_clutter", 1.0, 10.0),
+    ("warehouse+m2dp", "warehouse", 1.0, 10.0),
+];
+
+/// The trials of a round (names and parameters): none before round 3.
+fn trials(round: &Round) -> Res<Vec<(&'static str, DescriptorParams)>> {
+    if round.number < 3 {
+        return Ok(vec![]);
+    }
+    TRIALS_3
+        .iter()
+        .map(|&(name, base, ndt, m2dp)| {
+            let mut p = DescriptorParams::preset(base)?;
+            p.preset = name.into();
+            p.ndt_weight = ndt;
+            if ndt == 0.0 {
+                p.parts.clear();
+            }
+            p.parts.push(placecat::descriptor::Part {
+                kind: placecat::descriptor::PartKind::M2dp,
+                weight: m2dp,
+            });
+            p.validate()?;
+            Ok((name, p))
+        })
+        .collect()
+}
+
+/// Every preset of PRESETS, then the round's trials: names and parameters.
+fn all_presets(round: &Round) -> Res<(Vec<&'static str>, Vec<DescriptorParams>)> {
+    let mut names = placecat::descriptor::preset_names();
+    let mut presets: Vec<DescriptorParams> = names
         .iter()
         .map(|n| DescriptorParams::preset(n))
         .collect::<placecat::Result<_>>()?;
+    for (name, p) in trials(round)? {
+        names.push(name);
+        presets.push(p);
+    }
     Ok((names, presets))
 }
 
 fn dev_run(round: &Round, keep: impl Fn(&Family) -> bool) -> Res<DevRun> {
     let t0 = std::time::Instant::now();
-    let (names, presets) = all_presets()?;
+    let (names, presets) = all_presets(round)?;
     let mut sets = vec![];
     for f in families().iter().filter(|f| keep(f)) {
         for &seed in round.dev_seeds {
@@ -514,10 +567,11 @@ fn dev_run(round: &Round, keep: impl Fn(&Family) -> bool) -> Res<DevRun> {
 /// again).
 fn compute(round: &Round, dev_run: DevRun, dev_only: bool, with_real: bool) -> Res<Report> {
     let t0 = std::time::Instant::now();
-    let (names, presets) = all_presets()?;
+    let (names, presets) = all_presets(round)?;
+    let trial_names: Vec<&str> = TRIALS_3.iter().map(|t| t.0).collect();
     let new_presets: Vec<String> = names
         .iter()
-        .filter(|n| !PAPER_PRESETS.contains(n))
+        .filter(|n| !PAPER_PRESETS.contains(n) && !trial_names.contains(n))
         .map(|n| n.to_string())
         .collect();
     if dev_run.presets != names {
@@ -636,7 +690,11 @@ fn render(round: &Round, r: &Report, notes: &str) -> Res<String> {
     let (title, dev_cmd, test_cmd) = match round.number {
         1 => ("", "-- --dev".to_string(), String::new()),
         n => (
-            ", second round",
+            if n == 2 {
+                ", second round"
+            } else {
+                ", third round"
+            },
             format!("-- --round {n} --dev"),
             format!(" -- --round {n}"),
         ),
@@ -685,6 +743,8 @@ fn render(round: &Round, r: &Report, notes: &str) -> Res<String> {
     )?;
     let developed = if round.number == 1 {
         "No descriptor or preset was developed on the office or school floors."
+    } else if round.number == 3 {
+        "In this round the `m2dp` part (M2DP, He, Wang and Zhang, IROS 2016) was tried on the development seeds of every family, alone and beside the existing presets, under a rule written before its grid was looked at (docs/parts.md, third round); the test seeds were run once, after. The rule made no preset with M2DP; four trials are run beside the presets so that its test figures are reported, never chosen: `m2dp_alone` (M2DP alone), `indoor+m2dp` (the paper's indoor NDT plus M2DP at weight 20), `indoor_clutter+m2dp` (plus M2DP at 10) and `warehouse+m2dp` (plus M2DP at 10), the best weights of its dev grid for each."
     } else {
         "In this round the `clutter` part and `indoor_clutter` were developed on the development seeds of every family, the office and school floors included (docs/parts.md); the test seeds were run once, after."
     };
@@ -932,11 +992,14 @@ const NOTES_2: &str = "Written after the one test run of seeds 311-315 (presets 
 - **Small sets**: 45 scans a set indoors (one scan moves a figure by 2.2 points), 100 along a route; means over five test seeds.
 ";
 
+/// What did not work in round 3, in words, written after its one test run.
+const NOTES_3: &str = "(written after the test run)";
+
 fn notes_of(round: &Round) -> &'static str {
-    if round.number == 1 {
-        NOTES
-    } else {
-        NOTES_2
+    match round.number {
+        1 => NOTES,
+        2 => NOTES_2,
+        _ => NOTES_3,
     }
 }
 
@@ -1016,7 +1079,8 @@ fn main() -> Res<()> {
     let round = match value("--round").map(String::as_str) {
         None | Some("1") => &FIRST,
         Some("2") => &SECOND,
-        Some(other) => return Err(format!("--round {other}: there are rounds 1 and 2").into()),
+        Some("3") => &THIRD,
+        Some(other) => return Err(format!("--round {other}: there are rounds 1, 2 and 3").into()),
     };
     let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let dev_path = docs.join(round.dev_file);
