@@ -1,6 +1,6 @@
 //! Why stride k-means misses the warehouse's halls while hierarchical
 //! k-means++ finds them (issue 18, third round; docs/descriptors-3.md).
-//! On the development seeds only (test seeds are refused), for the
+//! On the development seeds only (the test seeds of docs/seeds.md are refused), for the
 //! paper's `indoor` and the hall presets: the kinds' sizes along the
 //! route, which kinds the stride seeds (scans 0, n/3, 2n/3) fall in, and
 //! k-means from other starts on the same Delta:
@@ -29,16 +29,8 @@ use rayon::prelude::*;
 
 type Res<T> = Result<T, Box<dyn std::error::Error>>;
 
-/// The test seeds of every round (docs/seeds.md): never run here.
-const TEST_SEEDS: [std::ops::RangeInclusive<u64>; 7] = [
-    101..=105,
-    201..=205,
-    301..=305,
-    311..=315,
-    321..=325,
-    401..=405,
-    501..=505,
-];
+#[path = "common/seeds.rs"]
+mod seeds;
 
 /// Lloyd's iterations from given centres (as `KMeans::fit` runs them):
 /// labels and the converged cost (sum of Delta to the centre).
@@ -106,10 +98,8 @@ fn main() -> Res<()> {
     };
     let scans: usize = value("--scans").map_or(Ok(150), |s| s.parse())?;
     let beams: Option<usize> = value("--beams").map(|s| s.parse()).transpose()?;
-    if let Some(s) = seeds
-        .iter()
-        .find(|s| TEST_SEEDS.iter().any(|r| r.contains(s)))
-    {
+    let blocked = seeds::test_seeds()?;
+    if let Some(s) = seeds.iter().find(|s| blocked.contains(s)) {
         return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
     }
     let presets = ["indoor", "indoor_plus", "warehouse", "free_space"];
