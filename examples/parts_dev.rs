@@ -7,8 +7,8 @@
 //!
 //!     cargo run --release --example parts_dev -- [--seeds 1,2,3] [--scans N] [--only NAME] [WEIGHTS...]
 //!
-//! WEIGHTS: `ndt,height_range,slice,esf,ring,clutter` (e.g.
-//! `1,0,5,5,5,0`); without any, a fixed list. The office and school floors
+//! WEIGHTS: `ndt,height_range,slice,esf,ring,clutter,m2dp` (e.g.
+//! `1,0,5,5,5,0,0`); without any, a fixed list. The office and school floors
 //! (9 scans a kind, 3 a room, as in `examples/descriptors.rs`) score 1-NN
 //! with no neighbour from the scan's own room. Never run on test seeds:
 //! every seed of the test column of docs/seeds.md is refused.
@@ -22,6 +22,10 @@ use placecat::*;
 use rayon::prelude::*;
 
 type Res<T> = Result<T, Box<dyn std::error::Error>>;
+
+#[path = "common/seeds.rs"]
+mod seeds;
+use seeds::test_seeds;
 
 /// The NDT histogram's weight, then one per part kind.
 const WEIGHTS: usize = 1 + placecat::descriptor::parts::MAX_PARTS;
@@ -40,42 +44,6 @@ struct Set {
     truth: Vec<String>,
     descriptors: Vec<Descriptor>,
     params: DescriptorParams,
-}
-
-/// Every simulator test seed of docs/seeds.md: the numbers of the table's
-/// test-seed column ("301, 302", "11 to 20"), but for the clustering
-/// seeds' row (those seed k-means, not scenes).
-fn test_seeds() -> Res<Vec<u64>> {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/seeds.md");
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
-    let mut seeds = Vec::new();
-    for line in text.lines().filter(|l| l.starts_with('|')) {
-        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-        if cells.len() < 4 || cells[1].starts_with("clustering") || cells[1] == "work" {
-            continue;
-        }
-        let words: Vec<&str> = cells[3]
-            .split(|c: char| !c.is_ascii_alphanumeric())
-            .filter(|w| !w.is_empty())
-            .collect();
-        for (i, w) in words.iter().enumerate() {
-            let Ok(n) = w.parse::<u64>() else { continue };
-            seeds.push(n);
-            let upto = words.get(i + 2).and_then(|w| w.parse::<u64>().ok());
-            if let (Some(&"to"), Some(m)) = (words.get(i + 1), upto) {
-                seeds.extend(n + 1..m);
-            }
-        }
-    }
-    if seeds.is_empty() {
-        return Err(format!("{path}: no test seed found").into());
-    }
-    // Those known when this was written, in case the file read is an older
-    // one (401-405: issue 14's third round, on another branch then).
-    for range in [101..=105, 201..=205, 301..=305, 311..=315, 401..=405] {
-        seeds.extend(range);
-    }
-    Ok(seeds)
 }
 
 fn all_parts(mut p: DescriptorParams) -> DescriptorParams {
@@ -202,7 +170,11 @@ fn main() -> Res<()> {
             "--only" => only = it.next().cloned(),
             w => {
                 let v: Vec<f32> = w.split(',').map(str::parse).collect::<Result<_, _>>()?;
-                weights.push(v.try_into().map_err(|_| "six weights")?);
+                weights.push(
+                    v.try_into().map_err(|_| {
+                        "seven weights: ndt,height_range,slice,esf,ring,clutter,m2dp"
+                    })?,
+                );
             }
         }
     }
@@ -212,12 +184,12 @@ fn main() -> Res<()> {
     }
     if weights.is_empty() {
         weights = vec![
-            [1., 0., 0., 0., 0., 0.],
-            [1., 0., 5., 5., 5., 0.],
-            [1., 0., 0., 0., 0., 5.],
-            [1., 0., 5., 5., 5., 5.],
-            [1., 0., 5., 0., 5., 5.],
-            [0., 0., 0., 0., 0., 10.],
+            [1., 0., 0., 0., 0., 0., 0.],
+            [1., 0., 5., 5., 5., 0., 0.],
+            [1., 0., 0., 0., 0., 5., 0.],
+            [1., 0., 5., 5., 5., 5., 0.],
+            [1., 0., 5., 0., 5., 5., 0.],
+            [0., 0., 0., 0., 0., 10., 0.],
         ];
     }
     for &seed in &seeds {
@@ -295,8 +267,8 @@ fn main() -> Res<()> {
             }
             println!("{counts:?}");
             println!(
-                "seed {seed} {:<16} n={} medians ndt {:.3} hr {:.3} slice {:.3} esf {:.3} ring {:.3} clutter {:.3}",
-                set.name, set.descriptors.len(), med[0], med[1], med[2], med[3], med[4], med[5]
+                "seed {seed} {:<16} n={} medians ndt {:.3} hr {:.3} slice {:.3} esf {:.3} ring {:.3} clutter {:.3} m2dp {:.4}",
+                set.name, set.descriptors.len(), med[0], med[1], med[2], med[3], med[4], med[5], med[6]
             );
             for w in &weights {
                 let (s, h, n) = score(set, w)?;

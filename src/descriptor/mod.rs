@@ -2,7 +2,7 @@
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices; and optional extra [`parts`] beside it (issue
 //! 18): [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`].
+//! [`clutter`], [`m2dp`].
 
 pub mod alignment;
 pub mod clutter;
@@ -10,6 +10,7 @@ pub mod directions;
 pub mod esf;
 pub mod height_range;
 pub mod histogram;
+pub mod m2dp;
 pub mod ndt_grid;
 pub mod params;
 pub mod parts;

@@ -8,16 +8,16 @@
 //! compares as the absolute difference of the feature over its range.
 //!
 //! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`].
+//! [`clutter`], [`m2dp`].
 
 use super::polar::PolarScan;
-use super::{clutter, esf, height_range, ring, slice};
+use super::{clutter, esf, height_range, m2dp, ring, slice};
 use crate::cloud::is_finite;
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::{Deserialize, Serialize};
 
 /// Most parts one descriptor may have (one of each kind).
-pub const MAX_PARTS: usize = 5;
+pub const MAX_PARTS: usize = 6;
 
 /// Which extra part.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -35,6 +35,9 @@ pub enum PartKind {
     /// Virtual horizontal scans at several heights above the floor, and
     /// the height profile of what stands in the room ([`clutter`]).
     Clutter,
+    /// The first singular vectors of a scan's projections onto 64 planes
+    /// (M2DP, He et al. 2016; [`m2dp`]).
+    M2dp,
 }
 
 impl PartKind {
@@ -45,6 +48,7 @@ impl PartKind {
         PartKind::Esf,
         PartKind::Ring,
         PartKind::Clutter,
+        PartKind::M2dp,
     ];
 
     /// Position in [`PartKind::ALL`].
@@ -60,6 +64,7 @@ impl PartKind {
             PartKind::Esf => &esf::CHANNELS,
             PartKind::Ring => &ring::CHANNELS,
             PartKind::Clutter => &clutter::CHANNELS,
+            PartKind::M2dp => &m2dp::CHANNELS,
         }
     }
 
@@ -88,6 +93,7 @@ impl PartKind {
             PartKind::Esf => esf::describe(points),
             PartKind::Ring => ring::describe_scan(scan),
             PartKind::Clutter => clutter::describe_scan(scan),
+            PartKind::M2dp => m2dp::describe(points),
         };
         debug_assert_eq!(v.len(), self.len());
         v
@@ -106,6 +112,7 @@ pub fn describe_parts(points: &[[f32; 3]], kinds: &[PartKind]) -> Vec<Vec<f32>> 
             let v = match kind {
                 PartKind::HeightRange => height_range::describe(points),
                 PartKind::Esf => esf::describe(points),
+                PartKind::M2dp => m2dp::describe(points),
                 _ => kind.describe_scan(scan.get_or_init(|| PolarScan::new(points))),
             };
             debug_assert_eq!(v.len(), kind.len());

@@ -63,20 +63,33 @@ fn the_slice_of_a_box_room_is_its_floor_plan() {
 }
 
 /// Rotating a scan about z changes no part beyond the noise of its voxel
-/// grid and sector edges; a room of another size is far away.
+/// grid and sector edges; a room of another size is far away. M2DP is
+/// scale-free (its rings are shares of the farthest point's distance, as
+/// in the paper): the 16 x 12 m hall has nearly the office's shape, and
+/// M2DP puts it at 0.0036 against 0.0028 for the turned office, so M2DP
+/// is held to a place of another shape (a corridor), and its distances
+/// (a mean over 192 values of |u - v| / 2, median 0.01-0.016 on the dev
+/// scenes) to ratios only.
 #[test]
 fn every_part_is_invariant_to_rotation_about_z() {
     let pts = office(4);
     let turned = rotate_points(&pts, &rotation([0.0, 0.0, 1.0], 1.1));
     let other = box_room(5, [16.0, 12.0, 5.0]);
+    let narrow = corridor(5);
     for kind in PartKind::ALL {
         let p = alone(kind);
         let opts = DistanceOptions::from(&p);
         let d = |a: &[[f32; 3]], b: &[[f32; 3]]| {
             delta(&describe(a, &p).unwrap(), &describe(b, &p).unwrap(), opts).unwrap()
         };
-        let (same, far) = (d(&pts, &turned), d(&pts, &other));
+        let same = d(&pts, &turned);
         assert!(same < 0.03, "{kind:?}: rotated {same}");
+        if kind == PartKind::M2dp {
+            let far = d(&pts, &narrow);
+            assert!(far > 4.0 * same, "{kind:?}: rotated {same}, corridor {far}");
+            continue;
+        }
+        let far = d(&pts, &other);
         assert!(
             far > 4.0 * same && far > 0.05,
             "{kind:?}: rotated {same}, other {far}"
@@ -374,7 +387,8 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
 /// simulated office and school scans, recorded by the code of commit
 /// 20288a1 in tests/fixtures/parts_digests.json; the clutter part's
 /// digests were recorded again when its voxel sample became the lowest
-/// point of each voxel instead of the first seen (order-independent).
+/// point of each voxel instead of the first seen (order-independent);
+/// the m2dp part's were added when it came (round 3 of issue 18).
 /// With PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
 ///
 /// The digests pin exact f32 bits, and so the platform's `f32::hypot`,
