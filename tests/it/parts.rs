@@ -69,7 +69,7 @@ fn the_slice_of_a_box_room_is_its_floor_plan() {
 /// M2DP puts it at 0.0036 against 0.0028 for the turned office, so M2DP
 /// is held to a place of another shape (a corridor), and its distances
 /// (a mean over 192 values of |u - v| / 2, median 0.01-0.016 on the dev
-/// scenes) to ratios only.
+/// scenes) to bounds of its own.
 #[test]
 fn every_part_is_invariant_to_rotation_about_z() {
     let pts = office(4);
@@ -83,12 +83,17 @@ fn every_part_is_invariant_to_rotation_about_z() {
             delta(&describe(a, &p).unwrap(), &describe(b, &p).unwrap(), opts).unwrap()
         };
         let same = d(&pts, &turned);
-        assert!(same < 0.03, "{kind:?}: rotated {same}");
         if kind == PartKind::M2dp {
+            // Rotated 0.0028, corridor 0.028 (9.8 times) measured; the part
+            // without its PCA turn puts the rotated office at 0.0045 (6.1
+            // times), and both bounds fail then. M2DP's median distance
+            // between scans indoors is 0.009-0.016 (docs/parts.md).
             let far = d(&pts, &narrow);
-            assert!(far > 4.0 * same, "{kind:?}: rotated {same}, corridor {far}");
+            assert!(same < 0.0035, "{kind:?}: rotated {same}");
+            assert!(far > 7.0 * same, "{kind:?}: rotated {same}, corridor {far}");
             continue;
         }
+        assert!(same < 0.03, "{kind:?}: rotated {same}");
         let far = d(&pts, &other);
         assert!(
             far > 4.0 * same && far > 0.05,
