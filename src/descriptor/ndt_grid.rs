@@ -183,13 +183,18 @@ fn voxel_floor(x: f64) -> (i32, f64) {
 
 /// The same on wasm, where `floor` is one instruction (f64.floor) but a
 /// float-to-int conversion is several with its range checks (V8's code
-/// for the function above was 120 x86 instructions per point,
-/// docs/wasm-floor.md): the index is the clamped floor, an integer-valued
-/// f64, read out of the bits of `f + 1.5 * 2^52` (exact for |f| < 2^31),
-/// and the f64 is used directly for the offset. The `+ 0.0` makes a -0.0
-/// index 0.0, as `0i32 as f64` is, so the offsets are the same bits as
-/// the native path's. For NaN the index is meaningless and unused: the
-/// point's key is NO_KEY.
+/// for the function above was 114 x86 instructions per point in the key
+/// loop, docs/wasm-floor.md): the index is the clamped floor, an
+/// integer-valued f64, read out of the bits of `f + 1.5 * 2^52` (exact for
+/// |f| < 2^31; the clamp keeps |f| < 2^20), and the f64 is used directly
+/// for the offset. The `+ 0.0` makes a -0.0 index 0.0, as `0i32 as f64`
+/// is, so the offsets are the same bits as the native path's. The two
+/// paths differ only for a NaN `x` (native: index 0 and a finite offset;
+/// here: a NaN offset). `x` is NaN only for a non-finite point, whose key
+/// is NO_KEY and whose offset is never summed: params' validate() keeps
+/// `voxel_size >= MIN_VOXEL_SIZE`, so 1/B is finite and a finite
+/// coordinate times it is never NaN (a subnormal B, 1/B = inf, made a 0.0
+/// coordinate NaN).
 #[cfg(any(target_arch = "wasm32", test))]
 #[inline(always)]
 fn voxel_floor_wasm(x: f64) -> (i32, f64) {
