@@ -9,9 +9,10 @@
 //! (STAGE one of read, grid, classify, align, hist, describe, total; `time`
 //! to print the fastest of N single calls of each stage, 5 in a row; `digest` to print
 //! a digest of the grid's and the descriptor's bits).
-//! wasm: `cargo rustc --release --example wasm_floor --target
-//! wasm32-unknown-unknown --no-default-features --crate-type cdylib`, run by
-//! bench/wasm-floor.mjs.
+//! wasm: `cargo build --release --example wasm_floor --target
+//! wasm32-unknown-unknown --no-default-features` (the `floor_*` functions
+//! are exported from the example's .wasm as they are), run by
+//! bench/wasm-floor.mjs; bench/wasm-floor-count.sh counts instructions.
 use placecat::descriptor::shape::ShapedCell;
 use placecat::descriptor::{alignment, histogram, ndt_grid, shape};
 use placecat::io::{read_scan, ReadLimits};

@@ -183,13 +183,18 @@ fn voxel_floor(x: f64) -> (i32, f64) {
 
 /// The same on wasm, where `floor` is one instruction (f64.floor) but a
 /// float-to-int conversion is several with its range checks (V8's code
-/// for the function above was 120 x86 instructions per point,
-/// docs/wasm-floor.md): the index is the clamped floor, an integer-valued
-/// f64, read out of the bits of `f + 1.5 * 2^52` (exact for |f| < 2^31),
-/// and the f64 is used directly for the offset. The `+ 0.0` makes a -0.0
-/// index 0.0, as `0i32 as f64` is, so the offsets are the same bits as
-/// the native path's. For NaN the index is meaningless and unused: the
-/// point's key is NO_KEY.
+/// for the function above was 114 x86 instructions per point in the key
+/// loop, docs/wasm-floor.md): the index is the clamped floor, an
+/// integer-valued f64, read out of the bits of `f + 1.5 * 2^52` (exact for
+/// |f| < 2^31; the clamp keeps |f| < 2^20), and the f64 is used directly
+/// for the offset. The `+ 0.0` makes a -0.0 index 0.0, as `0i32 as f64`
+/// is, so the offsets are the same bits as the native path's. The two
+/// paths differ only for a NaN `x` (native: index 0 and a finite offset;
+/// here: a NaN offset). `x` is NaN only for a non-finite point, whose key
+/// is NO_KEY and whose offset is never summed: params' validate() keeps
+/// `voxel_size >= MIN_VOXEL_SIZE`, so 1/B is finite and a finite
+/// coordinate times it is never NaN (a subnormal B, 1/B = inf, made a 0.0
+/// coordinate NaN).
 #[cfg(any(target_arch = "wasm32", test))]
 #[inline(always)]
 fn voxel_floor_wasm(x: f64) -> (i32, f64) {
@@ -245,22 +250,6 @@ mod tests {
             let want = x.floor().clamp(-(INDEX_LIMIT as f64), INDEX_LIMIT as f64) as i32;
             assert_eq!(voxel_index(x), want, "{x}");
         }
-        // The wasm path gives the same integer and the same f64 bits.
-        let mut r = crate::rng::rng(3);
-        let edges = [
-            -1e7, -1048575.5, -3.0, -2.5, -1e-300, -0.0, 0.0, 1e-300, 0.5, 2.999, 1048575.5, 1e7,
-        ];
-        let random: Vec<f64> = (0..200_000)
-            .map(|k| {
-                let w = if k % 2 == 0 { 3e5 } else { 50.0 };
-                rand::Rng::random_range(&mut r, -w..w)
-            })
-            .collect();
-        for x in edges.into_iter().chain(random) {
-            let (i, f) = voxel_floor_wasm(x);
-            assert_eq!(i, voxel_index(x), "{x}");
-            assert_eq!(f.to_bits(), (voxel_index(x) as f64).to_bits(), "{x}");
-        }
         let keys = [[-5, 3, 2], [-5, 3, 3], [-5, 4, -100], [0, 0, 0], [7, -1, 1]];
         for w in keys.windows(2) {
             assert!(pack(w[0]) < pack(w[1]));
@@ -268,6 +257,74 @@ mod tests {
         for k in keys {
             assert_eq!(unpack(pack(k)), k);
         }
+    }
+
+    /// The wasm voxel index gives the native one's integer and f64 bits for
+    /// every non-NaN input. Runs natively (`cargo test --lib ndt_grid`) and
+    /// compiled to wasm, where `voxel_index` is the portable code compiled
+    /// by the same backend as `voxel_floor_wasm` (`wasm-pack test --node --
+    /// --no-default-features --lib ndt_grid`, scripts/test-1-wasm.sh).
+    #[cfg_attr(not(target_arch = "wasm32"), test)]
+    #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
+    fn wasm_voxel_index_equals_the_portable_one() {
+        let l = INDEX_LIMIT as f64;
+        let mut edges = vec![
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0 - f64::EPSILON / 2.0,
+            -(1.0 - f64::EPSILON / 2.0),
+            -2.5,
+            2.999,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN,
+        ];
+        // Subnormals and the smallest normals, both signs.
+        for v in [5e-324, 1e-310, f64::MIN_POSITIVE] {
+            edges.extend([v, -v]);
+        }
+        // Around the clamp: +-L exactly, inside (L, L+1), L+1, and beyond.
+        for v in [l, l + 0.5, l + 1.0, l + 2.0, 1e7] {
+            for w in [v, v.next_up(), v.next_down()] {
+                edges.extend([w, -w]);
+            }
+        }
+        // Past i32 and the magic constant's exact range.
+        for k in [31, 32, 51, 52, 53, 63, 64] {
+            let v = 2f64.powi(k);
+            edges.extend([v, -v, 1.5 * v, -1.5 * v, v.next_up(), -v.next_down()]);
+        }
+        // Powers of two and their neighbours from 2^-60 to 2^59.
+        for k in -60..60 {
+            let v = 2f64.powi(k);
+            edges.extend([
+                v,
+                -v,
+                v.next_up(),
+                v.next_down(),
+                -v.next_up(),
+                -v.next_down(),
+            ]);
+        }
+        // Random values: within the index range, small ones, and ones
+        // reaching past the clamp (about a third beyond +-L).
+        let mut r = crate::rng::rng(3);
+        let random = (0..60_000).map(|k| {
+            let w = [3e6, 3e5, 50.0][k % 3];
+            rand::Rng::random_range(&mut r, -w..w)
+        });
+        let mut beyond = 0;
+        for x in edges.into_iter().chain(random) {
+            beyond += (x.abs() > l) as usize;
+            let (i, f) = voxel_floor_wasm(x);
+            let want = voxel_index(x);
+            assert_eq!(i, want, "{x:e}");
+            assert_eq!(f.to_bits(), (want as f64).to_bits(), "{x:e}");
+        }
+        assert!(beyond > 10_000, "{beyond} values past the clamp");
     }
 }
 

@@ -10,6 +10,12 @@ use serde::{Deserialize, Serialize};
 /// paper's F has 77.
 pub const MAX_CELLS: usize = 1_000_000;
 
+/// Smallest voxel edge B, in metres. Below it a voxel is finer than an f32
+/// coordinate's resolution at a few hundred metres, and a subnormal B makes
+/// 1/B infinite, so a 0.0 coordinate becomes 0 * inf = NaN in the grid
+/// (the native and wasm voxel index then disagree, ndt_grid.rs).
+pub const MIN_VOXEL_SIZE: f64 = 1e-3;
+
 /// How candidate orientations are chosen (rotation invariance).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
@@ -371,9 +377,9 @@ impl DescriptorParams {
                 self.eigen_threshold
             ));
         }
-        if !(self.voxel_size.is_finite() && self.voxel_size > 0.0) {
+        if !(self.voxel_size.is_finite() && self.voxel_size >= MIN_VOXEL_SIZE) {
             return invalid(format!(
-                "voxel_size must be positive, got {}",
+                "voxel_size must be at least {MIN_VOXEL_SIZE} m, got {}",
                 self.voxel_size
             ));
         }

@@ -119,7 +119,7 @@ fn describe_skips_bad_files_and_distances_write_csv() {
     for (path, want) in [
         (&short, "short.json: b_corridor.ply: mismatch: a matrix does not have rows x cols = 11 x 7 entries"),
         (&fewer_ranges, "ranges.json: a_office.ply: mismatch: the descriptor is 11x7, the set's parameters make 11x6"),
-        (&negative_voxels, "voxels.json: invalid parameter: voxel_size must be positive, got -1"),
+        (&negative_voxels, "voxels.json: invalid parameter: voxel_size must be at least 0.001 m, got -1"),
     ] {
         for args in [
             &["cluster", "--method", "kmeans", "--k", "2", "--seeding", "stride", "--seed", "0"][..],

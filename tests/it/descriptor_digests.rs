@@ -5,36 +5,9 @@
 //! computed from `placecat describe` output of commit 86ed595.
 
 use placecat::io::{read_scan, ReadLimits};
-use placecat::{describe, Descriptor, DescriptorParams};
+use placecat::{describe, DescriptorParams};
 
-fn fnv(words: impl IntoIterator<Item = u32>) -> u64 {
-    let mut h = 0xcbf2_9ce4_8422_2325u64;
-    for w in words {
-        for b in w.to_le_bytes() {
-            h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
-        }
-    }
-    h
-}
-
-fn digest(d: &Descriptor) -> String {
-    let s = &d.summary;
-    let head = [d.rows, d.cols, d.matrices.len()].map(|v| v as u32);
-    let tail = [
-        s.points,
-        s.dropped,
-        s.voxels,
-        s.sparse_voxels,
-        s.spherical,
-        s.planar,
-        s.linear,
-        s.in_range,
-        s.alignments,
-    ]
-    .map(|v| v as u32);
-    let body = d.matrices.iter().flatten().copied();
-    format!("{:016x}", fnv(head.into_iter().chain(body).chain(tail)))
-}
+include!("../common/descriptor_digest.rs");
 
 #[test]
 fn real_files_give_the_same_descriptors_as_before() {

@@ -214,6 +214,19 @@ fn invalid_parameters_are_named() {
         .unwrap_err()
         .to_string()
         .contains("voxel_size"));
+    // A subnormal B would make 1/B infinite; too small a B is refused too.
+    for tiny in [5e-324, 1e-310, 1e-9, 9.99e-4] {
+        let mut p = DescriptorParams::indoor();
+        p.voxel_size = tiny;
+        let e = describe(&office(1), &p).unwrap_err().to_string();
+        assert!(
+            e.contains("voxel_size must be at least 0.001"),
+            "{tiny}: {e}"
+        );
+    }
+    let mut p = DescriptorParams::indoor();
+    p.voxel_size = 1e-3;
+    assert!(p.validate().is_ok());
     let mut p = DescriptorParams::indoor();
     p.min_points_per_voxel = 2;
     assert!(describe(&office(1), &p)

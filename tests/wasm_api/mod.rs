@@ -9,6 +9,8 @@ use wasm_bindgen_test::*;
 include!("../common/parity_case.rs");
 include!("../common/bad_corpus.rs");
 
+mod descriptor_digests;
+
 fn message(e: JsError) -> String {
     let v: JsValue = e.into();
     let err: js_sys::Error = v.dyn_into().expect("a JS Error");
