@@ -9,6 +9,10 @@
 // commit's www/, built with scripts/build-www.sh in a worktree of it) on the
 // same files, alternated with this one BENCH_PAIRS times (default 3): the
 // before/after ratio measured in the same run.
+//
+// BENCH_PAGE_ONLY=1: only section 4 (the page on the 1,000 scans, with the
+// pairs if BENCH_BASE_WWW is set); prints its figures and writes them to
+// test-artifacts/bench-page.json, leaving docs/benchmarks-web.* alone.
 import { build } from 'esbuild';
 import { chromium } from 'playwright-core';
 import { createRequire } from 'node:module';
@@ -26,20 +30,23 @@ const ART = join(ROOT, 'test-artifacts');
 mkdirSync(ART, { recursive: true });
 const N = Number(process.env.BENCH_POINTS || 1_000_000);
 const POOL_SCANS = Number(process.env.BENCH_SCANS || 1000);
+const PAGE_ONLY = process.env.BENCH_PAGE_ONLY === '1';
 const results = { date: new Date().toISOString(), machine: `${execSync('nproc').toString().trim()} cores`, points: N };
 const fmt = (x) => (x / 1e6).toFixed(2);
 
 // 1. Node: the three parsers on the same bytes.
-const placecatNode = createRequire(import.meta.url)('../pkg/node/placecat.js');
-const bin = makePly(N, true), ascii = makePly(N, false);
-results.node = { binary: await compare(placecatNode, bin, N), ascii: await compare(placecatNode, ascii, N) };
-console.log('node', results.node);
+if (!PAGE_ONLY) {
+  const placecatNode = createRequire(import.meta.url)('../pkg/node/placecat.js');
+  const bin = makePly(N, true), ascii = makePly(N, false);
+  results.node = { binary: await compare(placecatNode, bin, N), ascii: await compare(placecatNode, ascii, N) };
+  console.log('node', results.node);
+}
 
 // 2. Chromium: the same, plus read+describe of real and simulated files.
 await build({ entryPoints: [join(ROOT, 'bench/parsers.mjs')], bundle: true, format: 'esm', outfile: join(ROOT, 'bench/parsers.bundle.js'), logLevel: 'error' });
 const simFile = join(ART, 'bench-sim-100k.ply');
 const cli = join(ROOT, 'target/release/placecat');
-execSync('cargo build --release --quiet --example time_describe', { cwd: ROOT, stdio: 'inherit' });
+if (!PAGE_ONLY) execSync('cargo build --release --quiet --example time_describe', { cwd: ROOT, stdio: 'inherit' });
 if (!existsSync(join(ART, 'bench-1000', 'scan_00000.ply')) || readdirSync(join(ART, 'bench-1000')).length < POOL_SCANS) {
   console.log(`simulating ${POOL_SCANS} outdoor scans for the pool benchmark`);
   execFileSync(cli, ['simulate', '--scene', 'outdoor', '--seed', '1', '--scans', String(POOL_SCANS), '-o', join(ART, 'bench-1000')], { stdio: 'inherit' });
@@ -52,39 +59,43 @@ const browser = await chromium.launch({
   executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
   args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--enable-precise-memory-info'],
 });
-const page = await browser.newPage();
 // The checkout's own folder name (main, or a worktree's).
 const checkout = basename(ROOT);
-await page.goto(`${base}/${checkout}/bench/page.html`);
-await page.waitForFunction(() => document.getElementById('status').textContent === 'ready');
-results.chromium = {
-  binary: await page.evaluate((n) => window.benchParse(n, true), N),
-  ascii: await page.evaluate((n) => window.benchParse(n, false), N),
-};
-console.log('chromium', results.chromium);
-const rel = (p) => `${base}/${p.slice(PARENT.length + 1)}`;
-const wasm = {
-  kitti_000094: await page.evaluate(([u, n]) => window.benchDescribe(u, n), [rel(realFile), '000094.bin']),
-  sim_100k_ply: await page.evaluate(([u, n]) => window.benchDescribe(u, n), [rel(simFile), 'sim.ply']),
-};
-const native = JSON.parse(execFileSync(join(ROOT, 'target/release/examples/time_describe'), [realFile, simFile], { env: { ...process.env, RUNS: '100' } }).toString());
-results.describe = {
-  kitti_000094: { wasm: wasm.kitti_000094, native: native[realFile] },
-  sim_100k_ply: { wasm: wasm.sim_100k_ply, native: native[simFile] },
-};
-console.log('describe', results.describe);
-
-// 3. The page's stages alone on the same files: reading them (main
-// thread, as the page does) and describing (two workers, from memory).
 const files = readdirSync(join(ART, 'bench-1000')).filter((f) => f.endsWith('.ply')).sort().slice(0, POOL_SCANS).map((f) => join(ART, 'bench-1000', f));
-await page.setInputFiles('#files', files);
-results.alone = {
-  read: await page.evaluate(() => window.benchRead(8)),
-  describe1: await page.evaluate(() => window.benchDescribeAlone(1)),
-  describe2: await page.evaluate(() => window.benchDescribeAlone(2)),
-};
-console.log('alone', results.alone);
-await page.close();
+if (!PAGE_ONLY) await parsersAndStages();
+/** Sections 2 and 3 in the browser: the parsers, read + describe against native, the page's stages alone. */
+async function parsersAndStages() {
+  const page = await browser.newPage();
+  await page.goto(`${base}/${checkout}/bench/page.html`);
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'ready');
+  results.chromium = {
+    binary: await page.evaluate((n) => window.benchParse(n, true), N),
+    ascii: await page.evaluate((n) => window.benchParse(n, false), N),
+  };
+  console.log('chromium', results.chromium);
+  const rel = (p) => `${base}/${p.slice(PARENT.length + 1)}`;
+  const wasm = {
+    kitti_000094: await page.evaluate(([u, n]) => window.benchDescribe(u, n), [rel(realFile), '000094.bin']),
+    sim_100k_ply: await page.evaluate(([u, n]) => window.benchDescribe(u, n), [rel(simFile), 'sim.ply']),
+  };
+  const native = JSON.parse(execFileSync(join(ROOT, 'target/release/examples/time_describe'), [realFile, simFile], { env: { ...process.env, RUNS: '100' } }).toString());
+  results.describe = {
+    kitti_000094: { wasm: wasm.kitti_000094, native: native[realFile] },
+    sim_100k_ply: { wasm: wasm.sim_100k_ply, native: native[simFile] },
+  };
+  console.log('describe', results.describe);
+
+  // 3. The page's stages alone on the same files: reading them (main
+  // thread, as the page does) and describing (two workers, from memory).
+  await page.setInputFiles('#files', files);
+  results.alone = {
+    read: await page.evaluate(() => window.benchRead(8)),
+    describe1: await page.evaluate(() => window.benchDescribeAlone(1)),
+    describe2: await page.evaluate(() => window.benchDescribeAlone(2)),
+  };
+  console.log('alone', results.alone);
+  await page.close();
+}
 
 // 4. The page's worker pool on POOL_SCANS files, with memory and CPU sampled.
 /** One run of the page at `url` on the files: wall time, CPU, memory and its own stage measures. @param {string} url */
@@ -128,7 +139,9 @@ if (process.env.BENCH_BASE_WWW) {
     const [first, second] = k % 2 ? [ownPage, basePage] : [basePage, ownPage];
     const r1 = await pageRun(first), r2 = await pageRun(second);
     const [before, after] = k % 2 ? [r2, r1] : [r1, r2];
-    pairs.push({ before: { seconds: before.seconds, cpu: before.cpu.total }, after: { seconds: after.seconds, cpu: after.cpu.total } });
+    // `main`: the CPU of the page's main thread (the renderer's "chromium" thread).
+    const main = (r) => r.cpu.kinds.find(([k]) => k === 'renderer: chromium')?.[1] ?? 0;
+    pairs.push({ before: { seconds: before.seconds, cpu: before.cpu.total, main: main(before) }, after: { seconds: after.seconds, cpu: after.cpu.total, main: main(after) } });
     console.log('pair', pairs.at(-1));
     own = after;
   }
@@ -146,6 +159,10 @@ console.log('pool', results.pool);
 console.log(breakdown.text);
 await browser.close();
 server.close();
+if (PAGE_ONLY) {
+  writeFileSync(join(ART, 'bench-page.json'), JSON.stringify(results, null, 2) + '\n');
+  process.exit(0);
+}
 
 // 5. The table.
 const pts = (ds) => ds.points / ds.fastest;
