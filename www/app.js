@@ -51,16 +51,19 @@ const engine = new Engine(wasm);
 // A scan's file is read here and its bytes moved to the worker (not
 // copied): a worker reads a File only between two descriptions (the bytes
 // come in through its own event loop), so reading there made the workers
-// wait; the main thread is idle meanwhile. Each worker holds four tasks,
+// wait; the main thread is idle meanwhile. Each worker holds eight tasks,
 // so the next files are read while it describes: with six reads at once a
 // file took ~30 ms to come (median, 1,000 scans of 1.3 MB, a loaded
-// machine), three descriptions' time. Memory: at most four files a worker,
-// and more than one only while they total 32 MB (large scans, e.g. 1M
-// points, are held one at a time). A bag (or the listing of its topics)
+// machine), three descriptions' time, and with four tasks a worker the
+// workers still waited ~1.1 s of a 1,000-scan run for their next task (the
+// reads, on the browser's threads, get the cores in bursts); eight halved
+// that. Memory: at most eight files a worker, and more than one only while
+// they total 32 MB (large scans, e.g. 1M points, are held one or two at a
+// time). A bag (or the listing of its topics)
 // has a worker to itself and reads the bag itself, in slices; a reference
 // set of the tail is held alone too, so that it goes to a free worker (matrix.js).
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
-  depth: 4,
+  depth: 8,
   bytes: (task) => task.file?.size ?? 0,
   maxBytes: 32 * 2 ** 20,
   alone: (task) => task.type === 'bag' || task.type === 'bagTopics' || oneAtATime(task),

@@ -1,6 +1,6 @@
 // One wasm instance per worker. Each task describes one scan (its bytes,
 // read and moved here by the page, pool.js; memory holds the bytes of the
-// tasks the worker holds: up to four, within 32 MB, with the page's pool),
+// tasks the worker holds: up to eight, within 32 MB, with the page's pool),
 // simulates one demo scan, computes rows of the Delta matrix or reference
 // sets of the choice of categories (matrix.js), or classifies one scan
 // with a model; the engine does the wasm work. A ROS bag is read in

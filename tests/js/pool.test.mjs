@@ -203,8 +203,8 @@ test('a batch hands its items over together, once per tick, and at once on flush
 
 test('a run\'s tail (matrix.js): each worker gets its rows of the matrix first, then reference sets one at a time; one slowed down takes fewer', async () => {
   const { matrixInWorkers, referencesInWorkers, tailKey, oneAtATime } = await import('../../www/matrix.js');
-  // As the page's pool: four tasks a worker, a reference set held alone.
-  const p = pool(4, { alone: oneAtATime });
+  // As the page's pool: eight tasks a worker, a reference set held alone.
+  const p = pool(8, { alone: oneAtATime });
   const jsons = ['a', 'b', 'c', 'd', 'e'];
   const key = tailKey();
   const matrix = matrixInWorkers(p, /** @type {any} */ ({}), jsons, key);
