@@ -7,6 +7,7 @@ pub mod csv;
 pub mod e57;
 pub mod kitti;
 pub mod las;
+mod lzf_pack;
 pub mod pcd;
 pub mod ply;
 pub mod poses;

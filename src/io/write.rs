@@ -101,28 +101,13 @@ pub fn pcd(points: &[[f32; 3]], data: PcdData) -> Result<Vec<u8>> {
                     raw.extend_from_slice(&p[k].to_le_bytes());
                 }
             }
-            let packed = match lzf::compress(&raw) {
-                Ok(c) => c,
-                // The crate refuses data it cannot shrink; LZF also allows a
-                // stream of literal runs, which every reader accepts.
-                Err(_) => lzf_literals(&raw),
-            };
+            let packed = super::lzf_pack::compress(&raw);
             out.extend_from_slice(&(packed.len() as u32).to_le_bytes());
             out.extend_from_slice(&(raw.len() as u32).to_le_bytes());
             out.extend_from_slice(&packed);
         }
     }
     Ok(out)
-}
-
-/// LZF stream of literal runs only (a control byte 0..=31 = run length - 1).
-fn lzf_literals(raw: &[u8]) -> Vec<u8> {
-    let mut out = Vec::with_capacity(raw.len() + raw.len() / 32 + 1);
-    for chunk in raw.chunks(32) {
-        out.push((chunk.len() - 1) as u8);
-        out.extend_from_slice(chunk);
-    }
-    out
 }
 
 /// Write points as a KITTI `.bin` (intensity 0).
