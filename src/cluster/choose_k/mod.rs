@@ -381,7 +381,7 @@ pub fn scores_with_references(
     references: &[Vec<f64>],
 ) -> Result<Scores> {
     let n = check_sizes(space, matrix, clusterer, params)?;
-    let k_max = params.max_k.min(n);
+    let k_max = k_max(n, params)?;
     if references.len() != params.references || references.iter().any(|r| r.len() != k_max) {
         let short = references.iter().map(Vec::len).min().unwrap_or(0);
         let long = references.iter().map(Vec::len).max().unwrap_or(0);
