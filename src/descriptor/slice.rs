@@ -73,7 +73,15 @@ pub fn sector_points_of(scan: &PolarScan) -> Option<Vec<[f64; 2]>> {
             continue;
         }
         let s = scan.sector(i, SECTORS);
-        if far[s].is_none_or(|(best, _)| r > best) {
+        // Ties of range go to the larger (x, y), so that the vertex, and
+        // the part's every bit, does not depend on the points' order.
+        let farther = |(best, xy): (f32, [f32; 2])| {
+            r.total_cmp(&best)
+                .then(p[0].total_cmp(&xy[0]))
+                .then(p[1].total_cmp(&xy[1]))
+                .is_gt()
+        };
+        if far[s].is_none_or(farther) {
             far[s] = Some((r, [p[0], p[1]]));
         }
     }

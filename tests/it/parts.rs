@@ -394,6 +394,10 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
 /// digests were recorded again when its voxel sample became the lowest
 /// point of each voxel instead of the first seen (order-independent);
 /// the m2dp part's were added when it came (round 3 of issue 18).
+/// Re-recorded once more when the slice's vertex of a sector stopped
+/// depending on the order of returns at the same range (ties go to the
+/// larger x, y): 13 real files' slice and clutter parts changed, every
+/// other digest stayed.
 /// With PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
 ///
 /// The digests pin exact f32 bits, and so the platform's `f32::hypot`,
@@ -455,4 +459,25 @@ fn parts_are_bit_identical_to_before_the_shared_polar_scan() {
         .filter(|k| got.get(*k) != want.get(*k))
         .collect();
     assert!(differ.is_empty(), "parts changed: {differ:?}");
+}
+
+/// Two returns of one sector at the same range (169 m: 119² + 120² = 169²,
+/// both in the 2-degree sector about 45 degrees): the vertex is the same
+/// whichever comes first. The first-come rule this replaces gave
+/// `indoor_plus`'s slice part other last bits for a shuffled room (the
+/// property test `delta_is_stable_under_rotation_and_point_order`, CI's
+/// case seed 374, shuffle 576).
+#[test]
+fn a_tie_of_range_in_a_sector_does_not_depend_on_the_order() {
+    let (a, b) = ([119.0f32, 120.0, 0.0], [120.0f32, 119.0, 0.0]);
+    assert_eq!(a[0].hypot(a[1]), b[0].hypot(b[1]));
+    let one = slice::sector_points(&[a, b]).unwrap();
+    let other = slice::sector_points(&[b, a]).unwrap();
+    let sector = placecat::descriptor::parts::sector_of(&a, slice::SECTORS);
+    assert_eq!(
+        sector,
+        placecat::descriptor::parts::sector_of(&b, slice::SECTORS)
+    );
+    assert_eq!(one[sector], other[sector]);
+    assert_eq!(one, other);
 }
