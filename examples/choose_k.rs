@@ -12,6 +12,9 @@
 //! `--seeds round3`: the third round's, the outdoor site and the warehouse
 //! under the `warehouse` preset (the page's demo): development seeds 1 to
 //! 10 and test seeds 401 to 405 (run once; `--dev-only` leaves them out).
+//! `--seeds round4`: the fourth round's outdoor site (the vehicle's
+//! corridor kept clear): development seeds 1 to 10 and test seeds 501 to
+//! 505 (run once; `--dev-only` leaves them out).
 //! Clustering seeds 0..9. Indoor: N scans per kind (default
 //! 10, two rooms of five); warehouse and outdoor: `--scans` along the
 //! trajectory (default: the simulator's own count). Writes a markdown
@@ -320,6 +323,17 @@ fn main() {
                     DescriptorParams::warehouse(),
                 ),
             ],
+        }),
+        Some("round4") => Some(Round {
+            title:
+                "the outdoor site of issue 14's fourth round (the vehicle's corridor kept clear)",
+            dev: (1..=10).collect(),
+            test: if dev_only {
+                vec![]
+            } else {
+                (501..=505).collect()
+            },
+            scenes: vec![("outdoor", SceneKind::Outdoor, DescriptorParams::outdoor())],
         }),
         _ => None,
     };

@@ -73,6 +73,67 @@ fn corridor(seed: u64) {
         if found.is_empty() { "" } else { ": " },
         found.join("; ")
     );
+    clearances(seed, &site);
+}
+
+/// Where a shape stands (x, y).
+fn centre_of(s: &Shape) -> [f64; 2] {
+    match *s {
+        Shape::Cuboid { min, max } => [(min[0] + max[0]) / 2.0, (min[1] + max[1]) / 2.0],
+        Shape::OrientedBox { centre, .. } | Shape::Sphere { centre, .. } => [centre[0], centre[1]],
+        Shape::Cylinder { centre, .. } => centre,
+    }
+}
+
+/// The fourth round's rule, measured: the nearest any solid shape's edge
+/// (trunk, boulder or bush by its full radius, box) comes to the centre
+/// line (the site keeps 1.1 m), and the lowest a crown hangs over the
+/// corridor, above the centre line's ground (the site keeps 2.5 m).
+fn clearances(seed: u64, site: &placecat::sim::sites::Site) {
+    let ground = site.ground.as_ref().expect("the outdoor site has ground");
+    let g = |p: [f64; 2]| ground.height(p[0], p[1]);
+    let route = &site.route;
+    let (mut solid, mut crown) = ((f64::INFINITY, String::new()), (f64::INFINITY, 0.0));
+    for s in &site.shapes {
+        let (edge, what) = match *s {
+            Shape::Sphere { centre, radius } if centre[2] >= g([centre[0], centre[1]]) => {
+                let c = [centre[0], centre[1]];
+                if let Some((d, q)) = route.nearest(c, radius + HALF_WIDTH, &[]) {
+                    let e = (d - HALF_WIDTH).max(0.0);
+                    if e < radius - 1e-9 {
+                        let low = centre[2] - (radius * radius - e * e).sqrt() - g(q);
+                        if low < crown.0 {
+                            crown = (low, radius);
+                        }
+                    }
+                }
+                continue;
+            }
+            Shape::Sphere { radius, .. } => (
+                route.least_along(centre_of(s), radius + 3.0, |q| {
+                    s.horizontal_distance(q[0], q[1])
+                }),
+                format!("mound r {radius:.2}"),
+            ),
+            Shape::Cylinder { radius, .. } => (
+                route.least_along(centre_of(s), radius + 3.0, |q| {
+                    s.horizontal_distance(q[0], q[1])
+                }),
+                format!("trunk r {radius:.2}"),
+            ),
+            _ => (
+                route.least_along(centre_of(s), 12.0, |q| s.horizontal_distance(q[0], q[1])),
+                "box".to_string(),
+            ),
+        };
+        if edge < solid.0 {
+            solid = (edge, what);
+        }
+    }
+    println!(
+        "seed {seed}: nearest solid edge {:.2} m from the centre line ({}); lowest crown over the corridor {:.2} m (r {:.2})",
+        solid.0, solid.1, crown.0, crown.1
+    );
 }
 
 fn closest_scans(seed: u64) {

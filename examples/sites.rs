@@ -1,7 +1,7 @@
 //! The sequence sites' seed table alone (a part of docs/experiments.md,
 //! section 4, without the rest of the report): for the development and
-//! test seeds fixed in docs/seeds.md (outdoor: 1-10 and 401-405, the third
-//! round's; warehouse: 1-3 and 101-105),
+//! test seeds fixed in docs/seeds.md (outdoor: 1-10 and 501-505, issue
+//! 14's fourth round's; warehouse: 1-3 and 101-105),
 //! `placecat simulate --scene outdoor|warehouse --seed S`, described with
 //! the `outdoor` / `indoor` preset, clustered into 3 by deterministic
 //! k-means and by hierarchical k-means++ (clustering seeds 0-9). Also the

@@ -123,17 +123,49 @@ impl Route {
     /// Distance from (x, y) to the nearest stretch of the route of a kind in
     /// `kinds` (any kind if empty), if one lies within `within` metres.
     pub fn distance(&self, p: [f64; 2], within: f64, kinds: &[&str]) -> Option<f64> {
-        let mut best: Option<f64> = None;
+        self.nearest(p, within, kinds).map(|(d, _)| d)
+    }
+
+    /// The distance from p to the nearest stretch of the route of a kind in
+    /// `kinds` (any kind if empty) and the point of the route where it is
+    /// nearest, if that lies within `within` metres.
+    pub fn nearest(&self, p: [f64; 2], within: f64, kinds: &[&str]) -> Option<(f64, [f64; 2])> {
+        let mut best: Option<(f64, [f64; 2])> = None;
         for i in self.grid.near(p, within) {
             if !kinds.is_empty() && !kinds.contains(&self.kinds[i]) {
                 continue;
             }
-            let d = segment_distance(p, self.points[i], self.points[i + 1]);
-            if d <= within && best.is_none_or(|b| d < b) {
-                best = Some(d);
+            let q = segment_closest(p, self.points[i], self.points[i + 1]);
+            let d = dist(p, q);
+            if d <= within && best.is_none_or(|(b, _)| d < b) {
+                best = Some((d, q));
             }
         }
         best
+    }
+
+    /// The least of `distance_to` over points of the route's stretches
+    /// that may lie within `within` metres of `centre`, taken every
+    /// [`STEP`] / 4 (infinite if there are none): how near a shape whose
+    /// footprint is not a disc comes to the route's centre line.
+    pub fn least_along(
+        &self,
+        centre: [f64; 2],
+        within: f64,
+        distance_to: impl Fn([f64; 2]) -> f64,
+    ) -> f64 {
+        let mut least = f64::INFINITY;
+        for i in self.grid.near(centre, within) {
+            let (a, b) = (self.points[i], self.points[i + 1]);
+            for k in 0..=4 {
+                let t = k as f64 / 4.0;
+                least = least.min(distance_to([
+                    a[0] + t * (b[0] - a[0]),
+                    a[1] + t * (b[1] - a[1]),
+                ]));
+            }
+        }
+        least
     }
 
     /// Whether any stretch of the route lies within `within` metres of p.
@@ -172,6 +204,11 @@ fn unit(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
 }
 
 fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    dist(p, segment_closest(p, a, b))
+}
+
+/// The point of the segment a-b nearest to p.
+fn segment_closest(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let l2 = dx * dx + dy * dy;
     let t = if l2 > 0.0 {
@@ -179,7 +216,7 @@ fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     } else {
         0.0
     };
-    dist(p, [a[0] + t * dx, a[1] + t * dy])
+    [a[0] + t * dx, a[1] + t * dy]
 }
 
 /// Route segments bucketed by square cells, so that placing thousands of

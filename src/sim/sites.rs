@@ -118,6 +118,15 @@ const CORRIDOR: f64 = 1.0;
 /// sensor rides at 1.6-1.95 m.
 const CORRIDOR_HEIGHT: f64 = 2.5;
 
+/// How far the edge of anything solid (a trunk's bark, a boulder or bush,
+/// a parked machine, a timber pile) stays from the route's centre line
+/// (m): the corridor's half width and 0.1 m more, so that nothing solid
+/// grazes the corridor's edge (before the fourth round of issue 14, bark
+/// stood 0.98 m and bushes 0.5 m from the centre line of the path).
+/// Branches and crowns keep to the corridor's edge (CORRIDOR), as the
+/// third round had them.
+const SOLID_CLEAR: f64 = CORRIDOR + 0.1;
+
 /// How far a crown at p may reach before it enters the vehicle's corridor
 /// (infinite away from the route).
 fn crown_reach(route: &Route, p: [f64; 2]) -> f64 {
@@ -126,32 +135,99 @@ fn crown_reach(route: &Route, p: [f64; 2]) -> f64 {
         .map_or(f64::INFINITY, |d| (d - CORRIDOR).max(0.0))
 }
 
-/// A tree: trunk into the ground and its crown; branches below
-/// CORRIDOR_HEIGHT reach at most `reach` from the trunk.
-fn tree(
-    out: &mut Vec<Shape>,
-    r: &mut ChaCha8Rng,
-    p: [f64; 2],
-    ground: f64,
-    species: Species,
-    reach: f64,
-) {
+/// Where a stem, boulder or bush drawn near the route may stand: the
+/// route whose corridor it keeps clear of, the ground, and whether a point
+/// is still the place it was drawn for (the forest: off the field and out
+/// of the road's clearing).
+struct Lot<'a> {
+    route: &'a Route,
+    ground: &'a Terrain,
+    allowed: &'a dyn Fn([f64; 2]) -> bool,
+}
+
+impl Lot<'_> {
+    /// p, or p moved straight away from the route until a disc of `radius`
+    /// about it keeps SOLID_CLEAR from the centre line (a stem or boulder
+    /// drawn by the path stands just outside the corridor its traffic keeps
+    /// clear; moving it keeps the stand's density, where leaving it out
+    /// would widen the path). None if the moved point is not allowed or
+    /// the route's bends give no room.
+    fn place(&self, p: [f64; 2], radius: f64) -> Option<[f64; 2]> {
+        let need = SOLID_CLEAR + radius;
+        let mut p = p;
+        // A move away from one stretch can bring p nearer another on the
+        // inside of a bend: look again.
+        for _ in 0..4 {
+            match self.route.nearest(p, need, &[]) {
+                Some((d, q)) if d < need => {
+                    let d = d.max(1e-9);
+                    // 1 mm more, so that rounding leaves it outside.
+                    let k = (need + 1e-3) / d;
+                    p = [q[0] + k * (p[0] - q[0]), q[1] + k * (p[1] - q[1])];
+                }
+                _ => return (self.allowed)(p).then_some(p),
+            }
+        }
+        None
+    }
+
+    fn height(&self, p: [f64; 2]) -> f64 {
+        self.ground.height(p[0], p[1])
+    }
+}
+
+/// Whether every shape's footprint keeps SOLID_CLEAR from the route's
+/// centre line (the shapes lie within `reach` of `centre`).
+fn clear_footprint(route: &Route, centre: [f64; 2], reach: f64, shapes: &[Shape]) -> bool {
+    let nearest = route.least_along(centre, reach + SOLID_CLEAR, |q| {
+        shapes
+            .iter()
+            .map(|s| s.horizontal_distance(q[0], q[1]))
+            .fold(f64::INFINITY, f64::min)
+    });
+    nearest >= SOLID_CLEAR
+}
+
+/// A tree drawn at p: trunk into the ground and its crown. The trunk keeps
+/// its bark SOLID_CLEAR from the route's centre line ([`Lot::place`];
+/// nothing is added if it cannot, the draws made all the same); branches
+/// below CORRIDOR_HEIGHT reach no nearer than CORRIDOR to it, and a
+/// broadleaf crown hangs no lower than CORRIDOR_HEIGHT over the corridor
+/// (its lowest branches broken off by the traffic: the crown sits higher).
+fn tree(out: &mut Vec<Shape>, r: &mut ChaCha8Rng, p: [f64; 2], species: Species, lot: &Lot) {
     let (h, trunk) = match species {
         Species::Broadleaf => (u(r, 7.0, 16.0), u(r, 0.15, 0.45)),
         _ => (u(r, 10.0, 22.0), u(r, 0.1, 0.25)),
     };
-    out.push(Shape::Cylinder {
+    let placed = lot.place(p, trunk);
+    let p = placed.unwrap_or(p);
+    let ground = lot.height(p);
+    let reach = crown_reach(lot.route, p);
+    let mut shapes = vec![Shape::Cylinder {
         centre: p,
         radius: trunk,
         z0: ground - 0.5,
         z1: ground + h,
-    });
+    }];
     match species {
         Species::Broadleaf => {
             // Crowns start above head height.
             let cr = u(r, 2.5, 4.5).min(0.4 * h);
-            out.push(Shape::Sphere {
-                centre: [p[0], p[1], ground + h - 0.7 * cr],
+            let mut z = ground + h - 0.7 * cr;
+            // The crown's lowest point over the corridor is over the
+            // corridor's point c nearest the crown's centre, e from it;
+            // it keeps CORRIDOR_HEIGHT over the ground there, on the centre
+            // line and at the stem, whichever is highest.
+            if let Some((d, q)) = lot.route.nearest(p, CORRIDOR + cr, &[]) {
+                let e = (d - CORRIDOR).max(0.0);
+                let k = e / d.max(1e-9);
+                let c = [p[0] + k * (q[0] - p[0]), p[1] + k * (q[1] - p[1])];
+                let under = ground.max(lot.height(q)).max(lot.height(c));
+                let low = z - (cr * cr - e * e).max(0.0).sqrt();
+                z += (under + CORRIDOR_HEIGHT - low).max(0.0);
+            }
+            shapes.push(Shape::Sphere {
+                centre: [p[0], p[1], z],
                 radius: cr,
             });
         }
@@ -159,16 +235,22 @@ fn tree(
             // A narrow crown from about half height, made of two spheres
             // stacked.
             let cr = u(r, 1.2, 2.2);
-            out.push(Shape::Sphere {
+            shapes.push(Shape::Sphere {
                 centre: [p[0], p[1], ground + h * u(r, 0.5, 0.65)],
                 radius: cr,
             });
-            out.push(Shape::Sphere {
+            shapes.push(Shape::Sphere {
                 centre: [p[0], p[1], ground + h * 0.85],
                 radius: 0.7 * cr,
             });
         }
-        Species::Spruce => spruce_crown(out, p, ground, u(r, 0.3, 2.0), h, u(r, 1.3, 2.3), reach),
+        Species::Spruce => {
+            let (base, radius) = (u(r, 0.3, 2.0), u(r, 1.3, 2.3));
+            spruce_crown(&mut shapes, p, ground, base, h, radius, reach)
+        }
+    }
+    if placed.is_some() {
+        out.extend(shapes);
     }
 }
 
@@ -365,13 +447,25 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
         let p = field_point(r, 6.0);
         if clear(p, 7.0) {
             let yaw = u(r, 0.0, TAU);
-            machine(&mut s, r, p, yaw, gz(p));
+            // A tractor's trailer reaches 7.9 m from p: left out (its draws
+            // made all the same) where it would stand in the corridor.
+            let mut parts = vec![];
+            machine(&mut parts, r, p, yaw, gz(p));
+            if clear_footprint(&route, p, 8.0, &parts) {
+                s.extend(parts);
+            }
         }
     }
+    let anywhere = |_: [f64; 2]| true;
+    let on_the_field = Lot {
+        route: &route,
+        ground: &ground,
+        allowed: &anywhere,
+    };
     for _ in 0..r.random_range(4..=10) {
         let p = field_point(r, 4.0);
         if clear(p, 5.0) {
-            tree(&mut s, r, p, gz(p), Species::Broadleaf, f64::INFINITY);
+            tree(&mut s, r, p, Species::Broadleaf, &on_the_field);
         }
     }
     for _ in 0..r.random_range(15..=35) {
@@ -476,20 +570,38 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
             && route.distance(p, 4.0, &[plain]).is_none()
             && route.near(p, REACH)
     };
+    // Stems, boulders and bushes moved out of the vehicle's corridor stay
+    // in the forest (Lot::place).
+    let in_stand = |p: [f64; 2]| forest(p, road_clear, path_clear);
+    let stand = Lot {
+        route: &route,
+        ground: &ground,
+        allowed: &in_stand,
+    };
     for _ in 0..(area * stems) as usize {
         let p = [u(r, lo[0], hi[0]), u(r, lo[1], hi[1])];
         let species = Species::draw(r);
-        if forest(p, road_clear, path_clear) {
-            tree(&mut s, r, p, gz(p), species, crown_reach(&route, p));
+        if in_stand(p) {
+            tree(&mut s, r, p, species, &stand);
         }
     }
     // Undergrowth, boulders and saplings; thicker along the path, where
-    // the canopy opens.
+    // the canopy opens. A boulder's or bush's edge keeps SOLID_CLEAR from
+    // the centre line, as a trunk's bark does.
+    let in_undergrowth = |p: [f64; 2]| forest(p, road_clear - 0.5, path_clear);
+    let undergrowth_lot = Lot {
+        route: &route,
+        ground: &ground,
+        allowed: &in_undergrowth,
+    };
     for _ in 0..(area * undergrowth) as usize {
         let p = [u(r, lo[0], hi[0]), u(r, lo[1], hi[1])];
         let rad = u(r, 0.3, 1.0);
-        if forest(p, road_clear - 0.5, path_clear) {
-            mound(&mut s, p, gz(p), rad, u(r, 0.2, 0.5));
+        if in_undergrowth(p) {
+            let sunk = u(r, 0.2, 0.5);
+            if let Some(p) = undergrowth_lot.place(p, rad) {
+                mound(&mut s, p, gz(p), rad, sunk);
+            }
         }
     }
     // Young spruces under the canopy, 200-600 a hectare.
@@ -515,8 +627,11 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
             p[0] - side * (q[1] - p[1]) / len,
             p[1] + side * (q[0] - p[0]) / len,
         ];
-        if forest(b, road_clear, path_clear) {
-            mound(&mut s, b, gz(b), u(r, 0.3, 0.8), 0.2);
+        if in_stand(b) {
+            let rad = u(r, 0.3, 0.8);
+            if let Some(b) = stand.place(b, rad) {
+                mound(&mut s, b, gz(b), rad, 0.2);
+            }
         }
     }
     // Timber stacked along the road, waiting for the truck.
@@ -526,8 +641,9 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
         let along = (q[1] - p[1]).atan2(q[0] - p[0]);
         let side = if r.random::<bool>() { 1.0 } else { -1.0 } * (road_clear + 1.0);
         let b = [p[0] - side * along.sin(), p[1] + side * along.cos()];
+        let mut pile = vec![];
         part(
-            &mut s,
+            &mut pile,
             b,
             along,
             gz(b),
@@ -536,6 +652,11 @@ pub fn outdoor(r: &mut ChaCha8Rng) -> Site {
             -0.1,
             u(r, 1.0, 2.0),
         );
+        // Straight by a bend, a long pile could reach the road's centre
+        // line: left out there.
+        if clear_footprint(&route, b, 5.5, &pile) {
+            s.extend(pile);
+        }
     }
     let road_route = route.clone();
     Site {
