@@ -295,6 +295,39 @@ fn simulate_describe_cluster_evaluate_round_trip() {
         "km.json",
     );
     assert_eq!(km["k"], 5);
+    assert_eq!(km["restarts"], 1, "one run unless asked");
+    // The cheapest of 10 k-means++ runs: never costlier than the single
+    // run (which is its run 0), and the same as the library's.
+    let plusplus = |restarts: &str, name: &str| {
+        run(
+            &[
+                "--method",
+                "kmeans",
+                "--k",
+                "5",
+                "--seed",
+                "1",
+                "--restarts",
+                restarts,
+            ],
+            name,
+        )
+    };
+    let (one, ten) = (plusplus("1", "pp1.json"), plusplus("10", "pp10.json"));
+    assert_eq!(
+        (one["restarts"].as_u64(), ten["restarts"].as_u64()),
+        (Some(1), Some(10))
+    );
+    assert_eq!(one["restart"], 0);
+    let cost = |v: &serde_json::Value| v["cost"].as_f64().unwrap();
+    assert!(cost(&ten) <= cost(&one), "{} > {}", cost(&ten), cost(&one));
+    // Run 0 of the restarts is the single run: a later run is kept only
+    // when it is cheaper.
+    if ten["restart"] == 0 {
+        assert_eq!(ten["labels"], one["labels"]);
+    } else {
+        assert!(cost(&ten) < cost(&one));
+    }
     let hk = run(
         &["--method", "hkmeans", "--categories", "5", "--seed", "1"],
         "hk.json",
@@ -345,6 +378,27 @@ fn simulate_describe_cluster_evaluate_round_trip() {
                 "2",
             ][..],
             "not both",
+        ),
+        (
+            &[
+                "--method",
+                "kmeans",
+                "--k",
+                "5",
+                "--seeding",
+                "stride",
+                "--restarts",
+                "3",
+            ][..],
+            "restarts = 3 with stride",
+        ),
+        (
+            &["--method", "kmeans", "--k", "5", "--restarts", "0"][..],
+            "restarts must be at least 1",
+        ),
+        (
+            &["--method", "hkmeans", "--restarts", "3"][..],
+            "--restarts is for --method kmeans",
         ),
     ] {
         let e = fails(
