@@ -180,9 +180,13 @@ export class Engine {
     return this.set.get('scans').delta(i, j);
   }
 
-  /** @param {number} k @param {Seeding} seeding @param {number} seed @returns {Int32Array} */
-  kmeans(k, seeding, seed) {
-    return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0).labels);
+  /**
+   * k-means; `restarts` runs, the one of lowest cost kept (1: the paper's single run).
+   * @param {number} k @param {Seeding} seeding @param {number} seed @param {number} [restarts]
+   * @returns {Int32Array}
+   */
+  kmeans(k, seeding, seed, restarts = 1) {
+    return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0, restarts >>> 0).labels);
   }
 
   /** @param {number} eps @param {number} minPoints @returns {Int32Array} */
