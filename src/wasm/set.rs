@@ -80,7 +80,11 @@ impl DescriptorSet {
         seed: u32,
         restarts: Option<u32>,
     ) -> WasmResult<JsValue> {
-        to_js(&self.set.kmeans(&kmeans_params(k, seeding, seed, restarts)?)?)
+        to_js(
+            &self
+                .set
+                .kmeans(&kmeans_params(k, seeding, seed, restarts)?)?,
+        )
     }
     /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
     #[wasm_bindgen(unchecked_return_type = "KMedoidsResult")]

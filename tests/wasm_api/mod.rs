@@ -276,7 +276,10 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     );
     assert!(e.contains("few") && e.contains("one, many"), "{e}");
     // Still usable after the errors.
-    assert_eq!(labels_of(&set.kmeans(2, "stride", 0, None).unwrap()).len(), 6);
+    assert_eq!(
+        labels_of(&set.kmeans(2, "stride", 0, None).unwrap()).len(),
+        6
+    );
 }
 
 /// The corpus of damaged scans gives, in wasm32, exactly the messages the
