@@ -74,6 +74,8 @@ def test_bad_parameters_raise(room):
         (lambda: c.kmeans(0), "invalid parameter"),
         (lambda: c.kmeans("many"), 'or "auto"'),
         (lambda: c.kmeans(2, seeding="clever"), 'unknown seeding "clever"'),
+        (lambda: c.kmeans(2, seeding="stride", restarts=3), "restarts = 3 with stride"),
+        (lambda: c.kmeans(2, restarts=0), "restarts must be at least 1"),
         (lambda: c.hkmeans().cut(-1.0), "threshold must be"),
         (lambda: c.dbscan(-0.5, 2), "invalid parameter"),
         (lambda: c.delta(0, 5), "index out of range"),
