@@ -4,26 +4,11 @@
 use placecat::cluster::kmeans::KMeansValidParams;
 use placecat::cluster::*;
 use placecat::eval::evaluate;
-use placecat::sim::{SceneKind, SimParams, Simulation};
-use placecat::{describe, Descriptor, DescriptorParams, DistanceOptions};
-
-/// Indoor rooms of 5 kinds, `per_kind` scans each, the paper's descriptor.
-fn indoor(per_kind: usize, seed: u64) -> (Vec<Descriptor>, Vec<String>) {
-    let mut p = SimParams::new(SceneKind::Indoor, seed);
-    p.scans = per_kind;
-    let sim = Simulation::new(&p).unwrap();
-    let params = DescriptorParams::indoor();
-    (0..sim.len())
-        .map(|i| {
-            let s = sim.scan(i);
-            (describe(&s.points, &params).unwrap(), s.label)
-        })
-        .unzip()
-}
+use placecat::DistanceOptions;
 
 /// The paper's descriptor on 5 indoor kinds of 4 scans (seed 1), k = 5.
 fn set() -> (Space, Vec<String>) {
-    let (ds, truth) = indoor(4, 1);
+    let (ds, truth) = crate::clustering::sim_set(4, 1);
     (Space::new(&ds, DistanceOptions::default()).unwrap(), truth)
 }
 
