@@ -723,6 +723,8 @@ fn auto_categories_follow_the_data() {
         &["--method", "hkmeans", "--seed", "3"],
         &["--method", "kmeans", "--k", "auto", "--seeding", "stride"],
         &["--method", "kmeans"],
+        // Every K the rule tries is clustered with the restarts too.
+        &["--method", "kmeans", "--k", "auto", "--restarts", "10"],
     ] {
         let v = cluster(&one_place, args);
         assert_eq!(v["categories"], 1, "{args:?}: {v}");
