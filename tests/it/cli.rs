@@ -397,6 +397,17 @@ fn simulate_describe_cluster_evaluate_round_trip() {
             "restarts must be at least 1",
         ),
         (
+            &[
+                "--method",
+                "kmeans",
+                "--k",
+                "5",
+                "--restarts",
+                "18446744073709551615",
+            ][..],
+            "restarts = 18446744073709551615 is more than the limit of 1000",
+        ),
+        (
             &["--method", "hkmeans", "--restarts", "3"][..],
             "--restarts is for --method kmeans",
         ),

@@ -16,6 +16,9 @@ fn set() -> (Space, Vec<String>) {
 fn one_run_is_the_single_run_and_the_first_of_every_restart() {
     let (space, _) = set();
     for seed in 0..5 {
+        // Checks only that the default is restarts(1) (the same run twice);
+        // that run 0 is main's single run is guarded by rng.rs
+        // (rng_stream(s, 0) == rng(s)) and the parity fixture.
         let plain = KMeans::fit(&space, &KMeansParams::new(5).seed(seed)).unwrap();
         let one = KMeans::fit(&space, &KMeansParams::new(5).seed(seed).restarts(1)).unwrap();
         assert_eq!(plain, one);
@@ -70,6 +73,16 @@ fn restarts_are_checked() {
     let (space, _) = set();
     let err = |p: KMeansParams| KMeans::fit(&space, &p).unwrap_err().to_string();
     assert!(err(KMeansParams::new(5).restarts(0)).contains("restarts must be at least 1"));
+    // A huge count is refused before any run (it used to panic on
+    // "capacity overflow" collecting the runs).
+    for huge in [MAX_RESTARTS + 1, 1 << 40, usize::MAX] {
+        let e = err(KMeansParams::new(5).restarts(huge));
+        assert!(
+            e.contains(&format!("restarts = {huge} is more than the limit of 1000")),
+            "{e}"
+        );
+    }
+    assert!(KMeansParams::new(5).restarts(MAX_RESTARTS).check().is_ok());
     let stride = err(KMeansParams::new(5).seeding(Seeding::Stride).restarts(10));
     assert!(stride.contains("restarts = 10 with stride"), "{stride}");
     assert!(KMeans::fit(

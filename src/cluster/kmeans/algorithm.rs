@@ -32,15 +32,15 @@ pub struct KMeans;
 impl KMeans {
     /// Cluster the space's items; `params` is checked first (a
     /// [`KMeansParams`](super::KMeansParams) or its validated form). With
-    /// `restarts` above 1, the run of lowest `cost` of [`KMeans::runs`].
+    /// `restarts` above 1, the run of lowest `cost` of [`KMeans::runs`],
+    /// computed one at a time (only the cheapest so far is held).
     pub fn fit(
         space: &Space,
         params: &impl ParamGuard<Checked = KMeansValidParams>,
     ) -> Result<KMeansResult> {
         let mut best: Option<KMeansResult> = None;
-        for run in Self::runs(space, params)? {
-            // Strictly cheaper only: of equal costs the earliest run stays.
-            if best.as_ref().is_none_or(|b| run.cost < b.cost) {
+        for run in Self::lazy_runs(space, params)? {
+            if best.as_ref().is_none_or(|b| cheaper(run.cost, b.cost)) {
                 best = Some(run);
             }
         }
@@ -55,12 +55,18 @@ impl KMeans {
         space: &Space,
         params: &impl ParamGuard<Checked = KMeansValidParams>,
     ) -> Result<Vec<KMeansResult>> {
+        Ok(Self::lazy_runs(space, params)?.collect())
+    }
+
+    /// The runs of [`KMeans::runs`], each computed when asked for.
+    fn lazy_runs<'a>(
+        space: &'a Space,
+        params: &impl ParamGuard<Checked = KMeansValidParams>,
+    ) -> Result<impl Iterator<Item = KMeansResult> + 'a> {
         let params = params.check()?;
         let all: Vec<usize> = (0..space.len()).collect();
         crate::cluster::lloyd::check_k(params.k, all.len())?;
-        Ok((0..params.restarts)
-            .map(|restart| Self::run(space, &all, &params, restart))
-            .collect())
+        Ok((0..params.restarts).map(move |restart| Self::run(space, &all, &params, restart)))
     }
 
     /// Run `restart` of k-means: seeding and Lloyd's iterations with RNG
@@ -88,5 +94,27 @@ impl KMeans {
             cost,
             restart,
         }
+    }
+}
+
+/// True if a run of cost `run` should replace the kept run of cost `kept`:
+/// strictly cheaper (of equal costs the earliest run stays), and a NaN cost
+/// is never kept over a number nor keeps a later number out.
+fn cheaper(run: f64, kept: f64) -> bool {
+    !run.is_nan() && (kept.is_nan() || run < kept)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::cheaper;
+
+    #[test]
+    fn a_nan_cost_neither_wins_nor_blocks() {
+        assert!(cheaper(1.0, 2.0));
+        assert!(!cheaper(2.0, 2.0), "the earliest of equals stays");
+        assert!(!cheaper(f64::NAN, 2.0));
+        assert!(cheaper(2.0, f64::NAN), "a later number replaces a NaN run");
+        assert!(cheaper(2.0, -f64::NAN));
+        assert!(!cheaper(-f64::NAN, 2.0));
     }
 }

@@ -16,8 +16,11 @@ pub struct KMeansParams {
     /// Iteration cap (at least 1).
     pub max_iterations: usize,
     /// Runs of k-means, each from its own seeding, keeping the one of
-    /// lowest cost (scikit-learn's `n_init`; Arthur and Vassilvitskii 2007
-    /// recommend restarting k-means++). At least 1; 1 (the default, and
+    /// lowest cost. As scikit-learn's `n_init`, except for the cost
+    /// compared: the sum of (unsquared) Delta to the centres, the paper's
+    /// metric, not the squared-distance inertia (Arthur and Vassilvitskii
+    /// 2007 recommend restarting k-means++). At least 1, at most
+    /// [`MAX_RESTARTS`]; 1 (the default, and
     /// what parameters written without this field read as) is the paper's
     /// single run. Run r draws from stream r of the RNG seeded with `seed`
     /// ([`crate::rng::rng_stream`]), so run 0 is the single run. More than
@@ -64,11 +67,21 @@ impl KMeansParams {
     }
 }
 
-/// Reject 0 runs, and restarts of a seeding that draws nothing (every run
+/// The most runs `restarts` may ask for: each run is a full k-means, so
+/// more would take hours on a large set and, above, would be a slip of the
+/// hand (scikit-learn's default is 10; the page offers 10).
+pub const MAX_RESTARTS: usize = 1000;
+
+/// Reject 0 runs, more than [`MAX_RESTARTS`], and restarts of a seeding that draws nothing (every run
 /// would be the first again).
 fn check_restarts(restarts: usize, seeding: Seeding) -> Result<()> {
     if restarts == 0 {
         return invalid("restarts must be at least 1 (1: a single run of k-means), got 0");
+    }
+    if restarts > MAX_RESTARTS {
+        return invalid(format!(
+            "restarts = {restarts} is more than the limit of {MAX_RESTARTS} runs of k-means"
+        ));
     }
     if restarts > 1 && seeding == Seeding::Stride {
         return invalid(format!(
