@@ -101,6 +101,8 @@ test('k-means, DBSCAN and the sweep return plain labels and points', () => {
   // the single run; stride restarts would all be one run and are refused.
   const truth = scans.map((s) => s.label);
   const seeds = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9];
+  // Only that the default is restarts = 1 (the same call twice); that run 0
+  // is main's single run is guarded by rng.rs and the parity fixture.
   assert.deepEqual(e.kmeans(8, 'plusplus', 3, 1), e.kmeans(8, 'plusplus', 3));
   const single = seeds.map((seed) => e.evaluate(truth, e.kmeans(8, 'plusplus', seed)).accuracy);
   const best = seeds.map((seed) => e.evaluate(truth, e.kmeans(8, 'plusplus', seed, 10)).accuracy);
@@ -109,6 +111,11 @@ test('k-means, DBSCAN and the sweep return plain labels and points', () => {
     best: [1, 1, 1, 1, 1, 1, 1, 1, 0.975, 1],
   }, 'measured: the cheapest of 10 is right more often');
   assert.throws(() => e.kmeans(8, 'stride', 0, 10), /restarts = 10 with stride/);
+  // Not whole positive numbers: refused before the wasm side would see
+  // -1 >>> 0 = 4294967295, 2.5 >>> 0 = 2 or NaN >>> 0 = 0.
+  for (const bad of [-1, 2.5, NaN, 0, 2 ** 40, Infinity]) {
+    assert.throws(() => e.kmeans(8, 'plusplus', 0, bad), RangeError, String(bad));
+  }
   e.dispose();
 });
 
