@@ -76,6 +76,7 @@ def test_bad_parameters_raise(room):
         (lambda: c.kmeans(2, seeding="clever"), 'unknown seeding "clever"'),
         (lambda: c.kmeans(2, seeding="stride", restarts=3), "restarts = 3 with stride"),
         (lambda: c.kmeans(2, restarts=0), "restarts must be at least 1"),
+        (lambda: c.kmeans(2, restarts=2**40), "restarts = 1099511627776 is more than the limit of 1000"),
         (lambda: c.hkmeans().cut(-1.0), "threshold must be"),
         (lambda: c.dbscan(-0.5, 2), "invalid parameter"),
         (lambda: c.delta(0, 5), "index out of range"),
