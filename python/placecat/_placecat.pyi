@@ -140,7 +140,7 @@ class Collection:
     ) -> Dict[str, Any]:
         """labels, k, categories, seeding, seed, iterations, converged, cost,
         restarts, restart: the cheapest of `restarts` k-means runs (1: the
-        paper's single run)."""
+        paper's single run; at most 1000)."""
     def kmedoids(self, k: int, seed: int = 0) -> Dict[str, Any]: ...
     def hkmeans(self, seed: int = 0) -> Tree: ...
     def choose_categories(

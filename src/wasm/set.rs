@@ -69,7 +69,8 @@ impl DescriptorSet {
     /// k-means: `seeding` is `random`, `stride` or `plusplus`. `restarts`
     /// (optional, default 1: the paper's single run): runs of k-means, the
     /// one of lowest cost kept, the earliest of equals (run r seeded from
-    /// stream r of `seed`); more than 1 needs `random` or `plusplus`.
+    /// stream r of `seed`), at most 1000; more than 1 needs `random` or
+    /// `plusplus`.
     /// Returns `{labels, seeds, iterations, converged, cost, restart}`
     /// (`restart`: the run kept, from 0).
     #[wasm_bindgen(unchecked_return_type = "KMeansResult")]

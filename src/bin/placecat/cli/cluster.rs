@@ -31,7 +31,8 @@ pub struct ClusterArgs {
     pub seeding: String,
     /// kmeans: runs of k-means, each from its own seeding, keeping the one
     /// of lowest cost (1: the paper's single run; more needs random or
-    /// plusplus seeding). With --k auto every k tried is clustered so.
+    /// plusplus seeding; at most 1000). With --k auto every k tried is
+    /// clustered so.
     #[arg(long, default_value_t = 1)]
     pub restarts: usize,
     /// Seeds k-means, k-medoids, the tree's 2-means splits and the choice
