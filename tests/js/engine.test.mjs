@@ -116,6 +116,8 @@ test('k-means, DBSCAN and the sweep return plain labels and points', () => {
   for (const bad of [-1, 2.5, NaN, 0, 2 ** 40, Infinity]) {
     assert.throws(() => e.kmeans(8, 'plusplus', 0, bad), RangeError, String(bad));
   }
+  // A whole number above the core's limit is the wasm side's Error.
+  assert.throws(() => e.kmeans(8, 'plusplus', 0, 1001), /restarts = 1001 is more than the limit of 1000/);
   e.dispose();
 });
 
