@@ -324,7 +324,7 @@ async function cluster() {
       if (state.cut) return render();
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
-    const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed) : engine.dbscan(m.eps, m.minPoints);
+    const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed, m.restarts) : engine.dbscan(m.eps, m.minPoints);
     state = S.withLabels(state, labels, engine.medoids(labels));
   } catch (e) {
     return view.status(e.message);

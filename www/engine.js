@@ -180,9 +180,19 @@ export class Engine {
     return this.set.get('scans').delta(i, j);
   }
 
-  /** @param {number} k @param {Seeding} seeding @param {number} seed @returns {Int32Array} */
-  kmeans(k, seeding, seed) {
-    return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0).labels);
+  /**
+   * k-means; `restarts` runs, the one of lowest cost kept (1: the paper's single run;
+   * the wasm side refuses more than its limit, 1000).
+   * @param {number} k @param {Seeding} seeding @param {number} seed @param {number} [restarts]
+   * @returns {Int32Array}
+   * @throws {RangeError} unless `restarts` is a whole number from 1 to 2^32 - 1 (`>>> 0`
+   *   would turn -1 into 4294967295, 2.5 into 2 and NaN into 0).
+   */
+  kmeans(k, seeding, seed, restarts = 1) {
+    if (!Number.isInteger(restarts) || restarts < 1 || restarts > 0xffffffff) {
+      throw new RangeError(`restarts must be a whole number of runs from 1, got ${restarts}`);
+    }
+    return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0, restarts).labels);
   }
 
   /** @param {number} eps @param {number} minPoints @returns {Int32Array} */

@@ -22,7 +22,8 @@ import { siteSubsample } from './suggest.js';
  * @typedef {{label: number, members: number[], medoid: number}} Category */
 /** How to cluster (the form's values).
  * @typedef {{method: 'hkmeans' | 'kmeans' | 'dbscan', hkSeed: number, k: number,
- *   seeding: import('./engine.js').Seeding, kmSeed: number, eps: number, minPoints: number}} Method */
+ *   seeding: import('./engine.js').Seeding, restarts: number, kmSeed: number, eps: number,
+ *   minPoints: number}} Method */
 
 /**
  * @typedef {object} State

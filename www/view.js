@@ -167,6 +167,8 @@ export class View {
       hkSeed: Number($('hk-seed').value),
       k: Number($('k').value),
       seeding: /** @type {Method['seeding']} */ ($('seeding').value),
+      // "k-means++, best of 10" is plusplus seeding with 10 restarts.
+      restarts: Number(/** @type {HTMLSelectElement} */ (document.getElementById('seeding')).selectedOptions[0]?.dataset.restarts ?? 1),
       kmSeed: Number($('km-seed').value),
       eps: Number($('eps').value),
       minPoints: Number($('minpts').value),

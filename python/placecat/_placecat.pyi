@@ -136,7 +136,11 @@ class Collection:
         k: Union[int, Literal["auto"], None] = None,
         seeding: str = "plusplus",
         seed: int = 0,
-    ) -> Dict[str, Any]: ...
+        restarts: int = 1,
+    ) -> Dict[str, Any]:
+        """labels, k, categories, seeding, seed, iterations, converged, cost,
+        restarts, restart: the cheapest of `restarts` k-means runs (1: the
+        paper's single run; at most 1000)."""
     def kmedoids(self, k: int, seed: int = 0) -> Dict[str, Any]: ...
     def hkmeans(self, seed: int = 0) -> Tree: ...
     def choose_categories(

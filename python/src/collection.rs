@@ -135,22 +135,30 @@ impl PyCollection {
     }
 
     /// k-means: k an int or "auto" (chosen as the CLI chooses it; the
-    /// choice is under "choice"). A dict: labels, k, categories, seeding,
-    /// seed, iterations, converged, cost.
-    #[pyo3(signature = (k=None, seeding="plusplus", seed=0))]
+    /// choice is under "choice"). `restarts`: runs of k-means, the one of
+    /// lowest cost kept (1: the paper's single run; at most 1000; more
+    /// than 1 needs random or plusplus seeding). A dict: labels, k, categories, seeding, seed,
+    /// iterations, converged, cost, restarts, restart (the run kept).
+    #[pyo3(signature = (k=None, seeding="plusplus", seed=0, restarts=1))]
     fn kmeans<'py>(
         &mut self,
         py: Python<'py>,
         k: Option<&Bound<'py, PyAny>>,
         seeding: &str,
         seed: u64,
+        restarts: usize,
     ) -> PyResult<Bound<'py, PyDict>> {
         let seeding: Seeding = seeding.parse().map_err(core_err)?;
         let asked = match k {
             Some(k) => count(k)?,
             None => None,
         };
-        let params = |k| KMeansParams::new(k).seeding(seeding).seed(seed);
+        let params = |k| {
+            KMeansParams::new(k)
+                .seeding(seeding)
+                .seed(seed)
+                .restarts(restarts)
+        };
         let inner = &mut self.inner;
         let (r, k, choice) = py
             .detach(|| {
@@ -176,6 +184,8 @@ impl PyCollection {
         out.set_item("iterations", r.iterations)?;
         out.set_item("converged", r.converged)?;
         out.set_item("cost", r.cost)?;
+        out.set_item("restarts", restarts)?;
+        out.set_item("restart", r.restart)?;
         if let Some(c) = choice {
             out.set_item("choice", to_py(py, &c)?)?;
         }

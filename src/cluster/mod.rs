@@ -18,7 +18,7 @@ mod medoid;
 pub use crate::distance::{Centre, Space};
 pub use dbscan::{Dbscan, DbscanParams};
 pub use hkmeans::{HierarchicalKMeans, Tree, TreeNode};
-pub use kmeans::{KMeans, KMeansParams, KMeansResult, Seeding};
+pub use kmeans::{KMeans, KMeansParams, KMeansResult, Seeding, MAX_RESTARTS};
 pub use kmedoids::{KMedoids, KMedoidsParams, KMedoidsResult};
 pub use medoid::{medoids, medoids_by};
 

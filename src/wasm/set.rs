@@ -66,20 +66,25 @@ impl DescriptorSet {
         let n = self.set.len();
         Ok(self.set.set_matrix(DistanceMatrix { n, data })?)
     }
-    /// k-means: `seeding` is `random`, `stride` or `plusplus`. Returns
-    /// `{labels, seeds, iterations, converged, cost}`.
+    /// k-means: `seeding` is `random`, `stride` or `plusplus`. `restarts`
+    /// (optional, default 1: the paper's single run): runs of k-means, the
+    /// one of lowest cost kept, the earliest of equals (run r seeded from
+    /// stream r of `seed`), at most 1000; more than 1 needs `random` or
+    /// `plusplus`.
+    /// Returns `{labels, seeds, iterations, converged, cost, restart}`
+    /// (`restart`: the run kept, from 0).
     #[wasm_bindgen(unchecked_return_type = "KMeansResult")]
     pub fn kmeans(
         &mut self,
         k: usize,
         #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
         seed: u32,
+        restarts: Option<u32>,
     ) -> WasmResult<JsValue> {
-        let seeding: Seeding = seeding.parse()?;
         to_js(
             &self
                 .set
-                .kmeans(&KMeansParams::new(k).seeding(seeding).seed(seed.into()))?,
+                .kmeans(&kmeans_params(k, seeding, seed, restarts)?)?,
         )
     }
     /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
@@ -194,16 +199,16 @@ impl DescriptorSet {
         to_js(&self.set.choose_categories_with(how, &params, &sets)?)
     }
     /// How many categories k-means should make of this set (as
-    /// `chooseCategories`, for `kmeans(k, seeding, seed)`).
+    /// `chooseCategories`, for `kmeans(k, seeding, seed, restarts)`: every
+    /// K tried is clustered with the same restarts, default 1).
     #[wasm_bindgen(js_name = chooseK, unchecked_return_type = "Choice")]
     pub fn choose_k(
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
         seed: u32,
+        restarts: Option<u32>,
     ) -> WasmResult<JsValue> {
-        let params = KMeansParams::new(1)
-            .seeding(seeding.parse::<Seeding>()?)
-            .seed(seed.into());
+        let params = kmeans_params(1, seeding, seed, restarts)?;
         let how = choose_k::Clusterer::KMeans(&params);
         to_js(&self.set.choose_categories(how, &Default::default())?)
     }
@@ -253,4 +258,17 @@ impl DescriptorSet {
 /// (`referenceDispersions`), which must be built alike.
 fn tree_params(seed: u32) -> HkMeansParams {
     HkMeansParams::new(seed.into())
+}
+
+/// The k-means parameters of `kmeans` and `chooseK` (restarts: 1 unless given).
+fn kmeans_params(
+    k: usize,
+    seeding: &str,
+    seed: u32,
+    restarts: Option<u32>,
+) -> crate::Result<KMeansParams> {
+    Ok(KMeansParams::new(k)
+        .seeding(seeding.parse::<Seeding>()?)
+        .seed(seed.into())
+        .restarts(restarts.map_or(1, |r| r as usize)))
 }

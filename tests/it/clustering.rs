@@ -108,7 +108,8 @@ fn dbscan_boundaries_exactly_epsilon_and_exactly_c() {
         .contains("min_points"));
 }
 
-fn sim_set(n_per_kind: usize, seed: u64) -> (Vec<Descriptor>, Vec<String>) {
+/// Indoor rooms of 5 kinds, `n_per_kind` scans each, the paper descriptor.
+pub(crate) fn sim_set(n_per_kind: usize, seed: u64) -> (Vec<Descriptor>, Vec<String>) {
     let mut p = SimParams::new(SceneKind::Indoor, seed);
     p.scans = n_per_kind;
     let sim = Simulation::new(&p).unwrap();

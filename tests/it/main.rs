@@ -27,6 +27,7 @@ mod properties;
 mod readers;
 mod readme;
 mod real_data;
+mod restarts;
 mod scene_families;
 mod simulator;
 mod survey;

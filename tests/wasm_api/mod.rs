@@ -73,7 +73,7 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     // The two room scans are nearer each other than to the ouster scans.
     assert!(m[3 * 6 + 4] < m[3 * 6]);
     // Same labels as the core computes on the same bytes.
-    let km = set.kmeans(3, "stride", 1).unwrap();
+    let km = set.kmeans(3, "stride", 1, None).unwrap();
     let labels = labels_of(&km);
     assert_eq!(labels[0], labels[1]);
     assert_eq!(labels[3], labels[4]);
@@ -140,7 +140,24 @@ fn simulated_demo_model_round_trip_and_classify() {
         set.add_json(&d.descriptor_json().unwrap()).unwrap();
         scans.push(d);
     }
-    let km = set.kmeans(5, "plusplus", 1).unwrap();
+    let km = set.kmeans(5, "plusplus", 1, None).unwrap();
+    // Restarts: run 0 is the single run, the cheapest of 10 is kept (and
+    // the kept run's index comes back); stride restarts are refused.
+    let one = set.kmeans(5, "plusplus", 1, Some(1)).unwrap();
+    assert_eq!(labels_of(&one), labels_of(&km));
+    assert_eq!(get(&one, "restart").as_f64(), Some(0.0));
+    let ten = set.kmeans(5, "plusplus", 1, Some(10)).unwrap();
+    let cost = |v: &JsValue| get(v, "cost").as_f64().unwrap();
+    // Measured (as `placecat cluster --restarts 10` on the same scans):
+    // run 9 is kept, cost 0.7291 against the single run's 0.8646.
+    assert_eq!(get(&ten, "restart").as_f64(), Some(9.0));
+    assert!((cost(&km) - 0.8646).abs() < 1e-4, "{}", cost(&km));
+    assert!((cost(&ten) - 0.7291).abs() < 1e-4, "{}", cost(&ten));
+    let e = message(set.kmeans(5, "stride", 1, Some(10)).err().unwrap());
+    assert!(e.contains("restarts = 10 with stride"), "{e}");
+    // A huge count is an Error, not a trap (it used to run out of memory).
+    let e = message(set.kmeans(5, "plusplus", 1, Some(u32::MAX)).err().unwrap());
+    assert!(e.contains("is more than the limit of 1000"), "{e}");
     let labels = labels_of(&km);
     let ev = DescriptorSet::evaluate(truth.clone(), &labels).unwrap();
     let acc = get(&ev, "accuracy").as_f64().unwrap();
@@ -241,9 +258,9 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     let cut = json.replacen(",0,", ",", 1);
     let e = message(set.add_json(&cut).err().unwrap());
     assert!(e.contains("rows x cols = 11 x 7"), "{e}");
-    let e = message(set.kmeans(0, "stride", 0).err().unwrap());
+    let e = message(set.kmeans(0, "stride", 0, None).err().unwrap());
     assert!(e.contains("k must be at least 1"), "{e}");
-    assert!(message(set.kmeans(2, "sideways", 0).err().unwrap()).contains("sideways"));
+    assert!(message(set.kmeans(2, "sideways", 0, None).err().unwrap()).contains("sideways"));
     assert!(message(set.dbscan(-1.0, 2).err().unwrap()).contains("epsilon"));
     assert!(message(set.dbscan_sweep(&[], &[2], None).err().unwrap()).contains("at least one"));
     assert!(message(
@@ -261,7 +278,10 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     );
     assert!(e.contains("few") && e.contains("one, many"), "{e}");
     // Still usable after the errors.
-    assert_eq!(labels_of(&set.kmeans(2, "stride", 0).unwrap()).len(), 6);
+    assert_eq!(
+        labels_of(&set.kmeans(2, "stride", 0, None).unwrap()).len(),
+        6
+    );
 }
 
 /// The corpus of damaged scans gives, in wasm32, exactly the messages the

@@ -3,7 +3,7 @@ use crate::cluster::lloyd::fit_subset;
 use crate::cluster::ParamGuard;
 use crate::distance::Space;
 use crate::error::Result;
-use crate::rng::rng;
+use crate::rng::rng_stream;
 use serde::{Deserialize, Serialize};
 
 /// The outcome of k-means.
@@ -18,8 +18,12 @@ pub struct KMeansResult {
     pub iterations: usize,
     /// True if no label changed in the last round (false: stopped at the cap).
     pub converged: bool,
-    /// Sum over scans of Delta to their centre.
+    /// Sum over scans of Delta to their centre: the cost that restarts
+    /// compare.
     pub cost: f64,
+    /// Of the `restarts` runs, the one kept (the cheapest, the earliest of
+    /// equals); 0 for a single run.
+    pub restart: usize,
 }
 
 /// k-means over a [`Space`].
@@ -27,29 +31,90 @@ pub struct KMeans;
 
 impl KMeans {
     /// Cluster the space's items; `params` is checked first (a
-    /// [`KMeansParams`](super::KMeansParams) or its validated form).
+    /// [`KMeansParams`](super::KMeansParams) or its validated form). With
+    /// `restarts` above 1, the run of lowest `cost` of [`KMeans::runs`],
+    /// computed one at a time (only the cheapest so far is held).
     pub fn fit(
         space: &Space,
         params: &impl ParamGuard<Checked = KMeansValidParams>,
     ) -> Result<KMeansResult> {
+        let mut best: Option<KMeansResult> = None;
+        for run in Self::lazy_runs(space, params)? {
+            if best.as_ref().is_none_or(|b| cheaper(run.cost, b.cost)) {
+                best = Some(run);
+            }
+        }
+        // check() made restarts at least 1, so there is a run.
+        best.ok_or_else(|| crate::Error::InvalidParameter("restarts must be at least 1".into()))
+    }
+
+    /// Every one of the `restarts` runs that [`KMeans::fit`] chooses from,
+    /// in order (run r depends only on the seed and r, so the first runs of
+    /// 10 restarts are those of 3).
+    pub fn runs(
+        space: &Space,
+        params: &impl ParamGuard<Checked = KMeansValidParams>,
+    ) -> Result<Vec<KMeansResult>> {
+        Ok(Self::lazy_runs(space, params)?.collect())
+    }
+
+    /// The runs of [`KMeans::runs`], each computed when asked for.
+    fn lazy_runs<'a>(
+        space: &'a Space,
+        params: &impl ParamGuard<Checked = KMeansValidParams>,
+    ) -> Result<impl Iterator<Item = KMeansResult> + 'a> {
         let params = params.check()?;
         let all: Vec<usize> = (0..space.len()).collect();
         crate::cluster::lloyd::check_k(params.k, all.len())?;
-        let mut r = rng(params.seed);
+        Ok((0..params.restarts).map(move |restart| Self::run(space, &all, &params, restart)))
+    }
+
+    /// Run `restart` of k-means: seeding and Lloyd's iterations with RNG
+    /// stream `restart` of the user's seed (stream 0: the single run).
+    fn run(
+        space: &Space,
+        all: &[usize],
+        params: &KMeansValidParams,
+        restart: usize,
+    ) -> KMeansResult {
+        let mut r = rng_stream(params.seed, restart as u64);
         let (labels, seeds, iterations, converged, cost) = fit_subset(
             space,
-            &all,
+            all,
             params.k,
             params.seeding,
             params.max_iterations,
             &mut r,
         );
-        Ok(KMeansResult {
+        KMeansResult {
             labels: labels.into_iter().map(|l| l as i32).collect(),
             seeds: seeds.iter().map(|&s| all[s]).collect(),
             iterations,
             converged,
             cost,
-        })
+            restart,
+        }
+    }
+}
+
+/// True if a run of cost `run` should replace the kept run of cost `kept`:
+/// strictly cheaper (of equal costs the earliest run stays), and a NaN cost
+/// is never kept over a number nor keeps a later number out.
+fn cheaper(run: f64, kept: f64) -> bool {
+    !run.is_nan() && (kept.is_nan() || run < kept)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::cheaper;
+
+    #[test]
+    fn a_nan_cost_neither_wins_nor_blocks() {
+        assert!(cheaper(1.0, 2.0));
+        assert!(!cheaper(2.0, 2.0), "the earliest of equals stays");
+        assert!(!cheaper(f64::NAN, 2.0));
+        assert!(cheaper(2.0, f64::NAN), "a later number replaces a NaN run");
+        assert!(cheaper(2.0, -f64::NAN));
+        assert!(!cheaper(-f64::NAN, 2.0));
     }
 }

@@ -5,4 +5,4 @@ mod hyperparams;
 
 pub use crate::cluster::lloyd::Seeding;
 pub use algorithm::{KMeans, KMeansResult};
-pub use hyperparams::{KMeansParams, KMeansValidParams};
+pub use hyperparams::{KMeansParams, KMeansValidParams, MAX_RESTARTS};

@@ -29,6 +29,12 @@ pub struct ClusterArgs {
     /// k-means seeding: random, stride, plusplus.
     #[arg(long, default_value = "plusplus")]
     pub seeding: String,
+    /// kmeans: runs of k-means, each from its own seeding, keeping the one
+    /// of lowest cost (1: the paper's single run; more needs random or
+    /// plusplus seeding; at most 1000). With --k auto every k tried is
+    /// clustered so.
+    #[arg(long, default_value_t = 1)]
+    pub restarts: usize,
     /// Seeds k-means, k-medoids, the tree's 2-means splits and the choice
     /// of K (its reference sets).
     #[arg(long, default_value_t = 0)]
@@ -129,12 +135,23 @@ pub fn cluster(
             descriptors.display()
         )));
     }
+    if a.restarts != 1 && a.method != "kmeans" {
+        return Err(Error::InvalidParameter(format!(
+            "--restarts is for --method kmeans, not {}",
+            a.method
+        )));
+    }
     let files = set.names().to_vec();
     let mut out = json!({ "files": files, "method": a.method });
     match a.method.as_str() {
         "kmeans" => {
             let seeding: Seeding = a.seeding.parse()?;
-            let params = |k| KMeansParams::new(k).seeding(seeding).seed(a.seed);
+            let params = |k| {
+                KMeansParams::new(k)
+                    .seeding(seeding)
+                    .seed(a.seed)
+                    .restarts(a.restarts)
+            };
             let k = match a.k.unwrap_or(Count::Auto) {
                 Count::Exactly(k) => k,
                 Count::Auto => {
@@ -155,6 +172,8 @@ pub fn cluster(
             out["iterations"] = json!(r.iterations);
             out["converged"] = json!(r.converged);
             out["cost"] = json!(r.cost);
+            out["restarts"] = json!(a.restarts);
+            out["restart"] = json!(r.restart);
         }
         "kmedoids" => {
             let k =
