@@ -479,9 +479,9 @@ fn csv_poses_may_quote_names_that_hold_commas() {
     assert_eq!(e, "poses: CSV: line 2: a quote opened here is not closed");
 }
 
-/// A binary PLY of only x, y, z as float32 LE is read by one copy of its
-/// body (src/io/ply.rs); the bits must be those of a record-by-record read
-/// of the same values with one more property after them, NaN payloads,
+/// A binary PLY of only x, y, z as float32 LE is read by its own loop
+/// (src/io/ply.rs); the bits must be those of the general loop's read of
+/// the same values with one more property after them, NaN payloads,
 /// -0.0, subnormals and infinities included.
 #[test]
 fn packed_float_ply_reads_the_bits_the_record_loop_reads() {
