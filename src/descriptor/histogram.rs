@@ -160,3 +160,172 @@ fn count_turning(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::descriptor::alignment::IDENTITY;
+    use rand::{Rng, SeedableRng};
+
+    /// The per-voxel loop this stage had before (main at 86ed595): every
+    /// voxel looked at once per orientation, its columns tested one by one.
+    /// The new code must give the same counts, bit for bit.
+    fn reference(
+        cells: &[ShapedCell],
+        rotations: &[Rotation],
+        params: &DescriptorParams,
+    ) -> (Vec<Vec<u32>>, usize) {
+        let (ns, np) = (params.spherical_classes, params.planar_classes);
+        let classes = ns + np + params.linear_classes;
+        let cols = params.cols();
+        let planar_dirs = directions::hemisphere(np);
+        let linear_dirs = directions::hemisphere(params.linear_classes);
+        let mut placed = Vec::new();
+        for c in cells {
+            let r = (c.mean[0] * c.mean[0] + c.mean[1] * c.mean[1] + c.mean[2] * c.mean[2]).sqrt();
+            let columns: Vec<usize> = (params.ranges.iter().enumerate())
+                .filter(|(_, (lo, hi))| r >= *lo && hi.is_none_or(|h| r < h))
+                .map(|(i, _)| i)
+                .collect();
+            if !columns.is_empty() {
+                let band = params
+                    .height_bands
+                    .partition_point(|&edge| edge <= c.mean[2]);
+                placed.push((c, band * classes, columns));
+            }
+        }
+        let matrices = rotations
+            .iter()
+            .map(|rot| {
+                let mut f = vec![0u32; params.rows() * cols];
+                for (c, band_row, columns) in &placed {
+                    let class = match c.shape {
+                        Shape::Spherical => {
+                            let roughness = c.eigenvalues[0] / c.eigenvalues[2];
+                            ((roughness * ns as f64) as usize).min(ns - 1)
+                        }
+                        Shape::Planar => {
+                            ns + directions::nearest(&planar_dirs, &rotate(rot, &c.normal))
+                        }
+                        Shape::Linear => {
+                            ns + np + directions::nearest(&linear_dirs, &rotate(rot, &c.axis))
+                        }
+                    };
+                    for &col in columns {
+                        f[(band_row + class) * cols + col] += 1;
+                    }
+                }
+                f
+            })
+            .collect();
+        (matrices, placed.len())
+    }
+
+    fn unit(r: &mut impl Rng) -> [f64; 3] {
+        let v: [f64; 3] = std::array::from_fn(|_| r.random_range(-1.0..1.0));
+        let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        v.map(|x| x / n)
+    }
+
+    /// A rotation from a random unit quaternion.
+    fn rotation(r: &mut impl Rng) -> Rotation {
+        let [x, y, z] = unit(r);
+        let half = r.random_range(0.0..std::f64::consts::PI);
+        let (s, w) = half.sin_cos();
+        let (x, y, z) = (x * s, y * s, z * s);
+        [
+            [
+                1.0 - 2.0 * (y * y + z * z),
+                2.0 * (x * y - w * z),
+                2.0 * (x * z + w * y),
+            ],
+            [
+                2.0 * (x * y + w * z),
+                1.0 - 2.0 * (x * x + z * z),
+                2.0 * (y * z - w * x),
+            ],
+            [
+                2.0 * (x * z - w * y),
+                2.0 * (y * z + w * x),
+                1.0 - 2.0 * (x * x + y * y),
+            ],
+        ]
+    }
+
+    /// Voxels of every shape; some exactly on an interval end or a band
+    /// edge (sqrt(e * e) is e exactly), some with a NaN mean or direction.
+    fn cells(r: &mut impl Rng, ends: &[f64], edges: &[f64]) -> Vec<ShapedCell> {
+        (0..400)
+            .map(|k| {
+                let mut mean: [f64; 3] = std::array::from_fn(|_| r.random_range(-40.0..40.0));
+                let (mut normal, mut axis) = (unit(r), unit(r));
+                match k % 7 {
+                    0 => mean = [ends[r.random_range(0..ends.len())], 0.0, 0.0],
+                    1 => mean = [0.0, 0.0, -ends[r.random_range(0..ends.len())]],
+                    2 if !edges.is_empty() => mean[2] = edges[r.random_range(0..edges.len())],
+                    3 => mean[r.random_range(0..3)] = f64::NAN,
+                    4 => {
+                        normal[r.random_range(0..3)] = f64::NAN;
+                        axis[r.random_range(0..3)] = f64::NAN;
+                    }
+                    _ => {}
+                }
+                let mut eigenvalues: [f64; 3] = std::array::from_fn(|_| r.random_range(0.01..1.0));
+                eigenvalues.sort_by(f64::total_cmp);
+                if k % 11 == 0 {
+                    eigenvalues = [0.5; 3];
+                }
+                let shape = [Shape::Spherical, Shape::Planar, Shape::Linear][k % 3];
+                ShapedCell {
+                    mean,
+                    shape,
+                    eigenvalues,
+                    normal,
+                    axis,
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn same_counts_as_the_per_voxel_loop() {
+        let mut r = rand_chacha::ChaCha8Rng::seed_from_u64(20);
+        // Overlapping, nested, touching, an infinite end and an open one.
+        let ranges = vec![
+            (0.0, Some(5.0)),
+            (2.0, Some(20.0)),
+            (0.5, Some(2.0)),
+            (5.0, Some(f64::INFINITY)),
+            (10.0, None),
+            (2.0, Some(20.0)),
+        ];
+        let ends = [0.0, 0.5, 2.0, 5.0, 10.0, 20.0, 39.0];
+        let mut rotations = vec![IDENTITY];
+        rotations.extend((0..5).map(|_| rotation(&mut r)));
+        for np in [1, 4, 9] {
+            for nl in [1, 3] {
+                for edges in [vec![], vec![-0.8, 0.3, 1.5, 5.0]] {
+                    let params = DescriptorParams {
+                        spherical_classes: 3,
+                        planar_classes: np,
+                        linear_classes: nl,
+                        ranges: ranges.clone(),
+                        height_bands: edges.clone(),
+                        ..DescriptorParams::indoor()
+                    };
+                    let cells = cells(&mut r, &ends, &edges);
+                    let (got, in_range) = histograms(&cells, &rotations, &params);
+                    let (want, want_in_range) = reference(&cells, &rotations, &params);
+                    assert_eq!(in_range, want_in_range, "np {np} nl {nl} bands {edges:?}");
+                    assert_eq!(got, want, "np {np} nl {nl} bands {edges:?}");
+                    // The test means something: most voxels counted, and the
+                    // orientation moves some of them.
+                    assert!(in_range > 300, "{in_range}");
+                    if np > 1 {
+                        assert_ne!(got[0], got[1], "np {np} nl {nl}");
+                    }
+                }
+            }
+        }
+    }
+}
