@@ -130,6 +130,12 @@ pub fn histograms(
             let mut f = vec![0u32; rows * cols];
             for (row, per_segment) in counts.chunks_exact(nseg).enumerate() {
                 for (columns, &n) in segments.columns.iter().zip(per_segment) {
+                    // Skipping the empty (row, segment) pairs keeps this within
+                    // the old per-voxel loop's order (one addition per voxel and
+                    // column) even with many classes and many nested ranges.
+                    if n == 0 {
+                        continue;
+                    }
                     for &col in columns {
                         f[row * cols + col] += n;
                     }
