@@ -7,7 +7,7 @@
 //! per orientation; the others are counted once, into the counts every
 //! orientation starts from. The simulated outdoor scans of the page's
 //! benchmark have 12 candidate orientations, and looking at every voxel for
-//! each made this stage 65 instructions per point there, against 8.6 on a
+//! each made this stage 65 instructions per point there, against 8.5 on a
 //! KITTI scan with one (docs/wasm-floor.md). The counts are integers, so
 //! adding them in another order changes no bit.
 
