@@ -85,7 +85,7 @@ pub fn histograms(
     // Counts per (row, segment), at row x nseg + segment.
     let mut common = vec![0u32; rows * nseg];
     let (mut planar, mut linear) = (Vec::new(), Vec::new());
-    let mut placed = 0;
+    let mut in_range = 0;
     for c in cells {
         let r = (c.mean[0] * c.mean[0] + c.mean[1] * c.mean[1] + c.mean[2] * c.mean[2]).sqrt();
         let segment = segments.of(r);
@@ -93,7 +93,7 @@ pub fn histograms(
         if segments.columns[segment].is_empty() {
             continue;
         }
-        placed += 1;
+        in_range += 1;
         // Height bands use the sensor frame's z (the sensor is assumed
         // upright, as the bands are meant for ground robots).
         let band = params
@@ -144,7 +144,7 @@ pub fn histograms(
             f
         })
         .collect();
-    (matrices, placed)
+    (matrices, in_range)
 }
 
 /// Add the turning voxels' counts for one orientation.
@@ -155,7 +155,7 @@ fn count_turning(
     rot: &Rotation,
     nseg: usize,
 ) {
-    // Every preset has 9 planar directions.
+    // 9 directions: every preset's planar classes.
     if let Ok(dirs) = <&[[f64; 3]; 9]>::try_from(dirs) {
         for t in turning {
             counts[t.at + directions::nearest_of(dirs, &rotate(rot, &t.v)) * nseg] += 1;
