@@ -526,4 +526,28 @@ fn packed_float_ply_reads_the_bits_the_record_loop_reads() {
     let packed = ply(false);
     let e = err_of(&packed[..packed.len() - 1], "p.ply");
     assert!(e.contains("truncated"), "{e}");
+    // Four bytes that are not padding after the body: damaged, not read.
+    let mut junk = packed.clone();
+    junk.extend([0xde, 0xad, 0xbe, 0xef]);
+    let e = err_of(&junk, "p.ply");
+    assert!(e.contains("4 bytes follow"), "{e}");
+    // A header claiming one vertex more than the body holds.
+    let n = points.len();
+    let (claim, more) = (
+        format!("element vertex {n}\n"),
+        format!("element vertex {}\n", n + 1),
+    );
+    let at = packed
+        .windows(claim.len())
+        .position(|w| w == claim.as_bytes())
+        .unwrap();
+    let lying = [&packed[..at], more.as_bytes(), &packed[at + claim.len()..]].concat();
+    let e = err_of(&lying, "p.ply");
+    assert!(
+        e.contains(&format!(
+            "truncated: the header claims {} vertices of 12 bytes",
+            n + 1
+        )),
+        "{e}"
+    );
 }
