@@ -478,3 +478,76 @@ fn csv_poses_may_quote_names_that_hold_commas() {
         .to_string();
     assert_eq!(e, "poses: CSV: line 2: a quote opened here is not closed");
 }
+
+/// A binary PLY of only x, y, z as float32 LE is read by its own loop
+/// (src/io/ply.rs); the bits must be those of the general loop's read of
+/// the same values with one more property after them, NaN payloads,
+/// -0.0, subnormals and infinities included.
+#[test]
+fn packed_float_ply_reads_the_bits_the_record_loop_reads() {
+    let values: Vec<f32> = [
+        f32::from_bits(0x7fc0_1234),
+        f32::from_bits(0xffa0_0001),
+        -0.0,
+        1e-45,
+        -1.1754942e-38,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        123456.78,
+        -1.5e-7,
+    ]
+    .into_iter()
+    .chain((0..300).map(|i| (i as f32 * 0.37).sin() * 40.0))
+    .collect();
+    let points: Vec<[f32; 3]> = values.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
+    let ply = |extra: bool| {
+        let mut b = format!(
+            "ply\nformat binary_little_endian 1.0\nelement vertex {}\nproperty float x\nproperty float y\nproperty float z\n{}end_header\n",
+            points.len(),
+            if extra { "property float intensity\n" } else { "" }
+        )
+        .into_bytes();
+        for p in &points {
+            p.iter().for_each(|v| b.extend(v.to_le_bytes()));
+            if extra {
+                b.extend(7.5f32.to_le_bytes());
+            }
+        }
+        b
+    };
+    let bits = |b: &[u8]| -> Vec<[u32; 3]> {
+        let cloud = read_scan(b, "p.ply", &ReadLimits::default()).unwrap();
+        cloud.points.iter().map(|p| p.map(f32::to_bits)).collect()
+    };
+    let want: Vec<[u32; 3]> = points.iter().map(|p| p.map(f32::to_bits)).collect();
+    assert_eq!(bits(&ply(false)), want);
+    assert_eq!(bits(&ply(true)), want);
+    // One byte short is still a truncated file, not a shorter cloud.
+    let packed = ply(false);
+    let e = err_of(&packed[..packed.len() - 1], "p.ply");
+    assert!(e.contains("truncated"), "{e}");
+    // Four bytes that are not padding after the body: damaged, not read.
+    let mut junk = packed.clone();
+    junk.extend([0xde, 0xad, 0xbe, 0xef]);
+    let e = err_of(&junk, "p.ply");
+    assert!(e.contains("4 bytes follow"), "{e}");
+    // A header claiming one vertex more than the body holds.
+    let n = points.len();
+    let (claim, more) = (
+        format!("element vertex {n}\n"),
+        format!("element vertex {}\n", n + 1),
+    );
+    let at = packed
+        .windows(claim.len())
+        .position(|w| w == claim.as_bytes())
+        .unwrap();
+    let lying = [&packed[..at], more.as_bytes(), &packed[at + claim.len()..]].concat();
+    let e = err_of(&lying, "p.ply");
+    assert!(
+        e.contains(&format!(
+            "truncated: the header claims {} vertices of 12 bytes",
+            n + 1
+        )),
+        "{e}"
+    );
+}
