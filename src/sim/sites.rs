@@ -122,7 +122,8 @@ const CORRIDOR_HEIGHT: f64 = 2.5;
 /// a parked machine, a timber pile) stays from the route's centre line
 /// (m): the corridor's half width and 0.1 m more, so that nothing solid
 /// grazes the corridor's edge (before the fourth round of issue 14, bark
-/// stood 0.98 m and bushes 0.5 m from the centre line of the path).
+/// stood 0.97-0.99 m and the edges of bushes and boulders 0.53-1.09 m
+/// from the centre line of the path).
 /// Branches and crowns keep to the corridor's edge (CORRIDOR), as the
 /// third round had them.
 const SOLID_CLEAR: f64 = CORRIDOR + 0.1;

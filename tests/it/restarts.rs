@@ -109,3 +109,15 @@ fn restarts_are_checked() {
         .to_string()
         .contains("restarts must be at least 1"));
 }
+
+/// A result written before restarts existed (no `restart` key) still
+/// reads, as run 0.
+#[test]
+fn a_result_without_restart_reads_as_run_0() {
+    let (space, _) = set();
+    let fit = KMeans::fit(&space, &KMeansParams::new(3).seed(2)).unwrap();
+    let mut json = serde_json::to_value(&fit).unwrap();
+    json.as_object_mut().unwrap().remove("restart").unwrap();
+    let old: KMeansResult = serde_json::from_value(json).unwrap();
+    assert_eq!(old, fit);
+}

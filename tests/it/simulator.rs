@@ -314,9 +314,11 @@ fn no_branch_reaches_into_the_vehicles_corridor_at_the_sensors_height() {
 fn the_vehicles_corridor_is_clear_of_trunks_boulders_machines_and_low_crowns() {
     // Issue 14, fourth round: the corridor a vehicle's traffic keeps clear
     // (1 m either side of the route's centre line, up to 2.5 m) held, on
-    // the old site, bushes and boulders whose edge came 0.5-0.85 m from the
-    // centre line, bark 0.98 m from it (seeds 6 and 10) and birch crowns
-    // hanging 2.24-2.5 m over it (seeds 3 and 5). Now anything solid
+    // the old site, on seeds 1-10: 3-19 mounds a seed (bushes, boulders)
+    // whose edge came 0.53-1.09 m from the centre line, bark 0.97-1.09 m
+    // from it (seeds 6, 7 and 10) and birch crowns hanging 2.35, 2.44 and
+    // 2.50 m over it (seeds 3, 5 and 10; docs/experiments.md, fourth
+    // round). Now anything solid
     // (trunks, boulders and bushes, machines, timber, bales, poles) keeps
     // its edge 1.1 m from the centre line, and no crown hangs lower than
     // 2.5 m above the centre line's ground over the corridor.

@@ -22,7 +22,9 @@ pub struct KMeansResult {
     /// compare.
     pub cost: f64,
     /// Of the `restarts` runs, the one kept (the cheapest, the earliest of
-    /// equals); 0 for a single run.
+    /// equals); 0 for a single run. Results written before restarts
+    /// existed read as run 0.
+    #[serde(default)]
     pub restart: usize,
 }
 

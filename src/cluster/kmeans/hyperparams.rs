@@ -69,7 +69,7 @@ impl KMeansParams {
 
 /// The most runs `restarts` may ask for: each run is a full k-means, so
 /// more would take hours on a large set and, above, would be a slip of the
-/// hand (scikit-learn's default is 10; the page offers 10).
+/// hand (scikit-learn's `n_init` was 10 before 1.4; the page offers 10).
 pub const MAX_RESTARTS: usize = 1000;
 
 /// Reject 0 runs, more than [`MAX_RESTARTS`], and restarts of a seeding that draws nothing (every run
