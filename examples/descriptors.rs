@@ -534,16 +534,6 @@ fn compute(round: &Round, dev_run: DevRun, dev_only: bool, with_real: bool) -> R
     })
 }
 
-/// A share in % with one decimal; `n/a` where the preset could not
-/// describe the scans.
-fn pct(x: f64) -> String {
-    if x.is_nan() {
-        "n/a".into()
-    } else {
-        format!("{:.1}", 100.0 * x)
-    }
-}
-
 /// The families' sensors in the order they were run.
 fn sensors_of(all: &[SetResult], family: &str) -> Vec<String> {
     let mut out: Vec<String> = vec![];
@@ -856,11 +846,6 @@ fn splice_family(all: &mut Vec<SetResult>, family: &str, new: Vec<SetResult>) {
     let tail = all.split_off(at.min(all.len()));
     all.extend(new);
     all.extend(tail);
-}
-
-fn read_json<T: serde::de::DeserializeOwned>(path: &std::path::Path) -> Res<T> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()).into())
 }
 
 /// What did not work in round 2, in words, written after its one test run.

@@ -233,14 +233,6 @@ fn run(presets: &[(String, Vec<String>)], seeds: &[u64], what: &str) -> Res<(Vec
     Ok((sets, t0.elapsed().as_secs_f64()))
 }
 
-fn pct(x: f64) -> String {
-    if x.is_nan() {
-        "n/a".into()
-    } else {
-        format!("{:.1}", 100.0 * x)
-    }
-}
-
 /// Mean over `sets` of a figure of `preset`; NaN unless it described them all.
 fn mean(sets: &[&SetResult], preset: &str, f: impl Fn(&Figures) -> f64) -> f64 {
     let v: Vec<f64> = sets
@@ -373,17 +365,12 @@ fn render(r: &Report) -> Res<String> {
     Ok(o)
 }
 
-fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Res<T> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    Ok(serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?)
-}
-
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let has = |a: &str| args.iter().any(|x| x == a);
     if has("--render") {
-        let r: Report = read(&docs.join(REPORT_FILE))?;
+        let r: Report = read_json(&docs.join(REPORT_FILE))?;
         std::fs::write(docs.join(MD_FILE), render(&r)?)?;
         return Ok(());
     }
@@ -410,7 +397,7 @@ fn main() -> Res<()> {
         .into());
     }
     let dev: Report =
-        read(&docs.join(DEV_FILE)).map_err(|e| format!("{e} (run with --dev first)"))?;
+        read_json(&docs.join(DEV_FILE)).map_err(|e| format!("{e} (run with --dev first)"))?;
     let (test, seconds) = run(&presets, TEST_SEEDS, "test")?;
     let r = Report {
         presets,

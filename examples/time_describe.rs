@@ -1,6 +1,9 @@
 //! Times read + describe (outdoor preset) of each file natively, one core,
 //! median and fastest of RUNS runs (default 5) after a warm-up; prints JSON. Used by bench/run.mjs to
-//! compare with the wasm build on the same files.
+//! compare with the wasm build on the same files. bench/run.mjs runs it with
+//! glibc told to keep freed memory (`GLIBC_TUNABLES`), as wasm's allocator
+//! does: otherwise this loop pays the kernel for the points' buffer on
+//! every run, which no other user of the library does.
 use placecat::io::{read_scan, ReadLimits};
 use placecat::{describe, DescriptorParams};
 use std::time::Instant;

@@ -124,3 +124,21 @@ pub fn sim_params(f: &Family, sensor: Sensor, seed: u64) -> placecat::Result<Sim
     }
     Ok(p)
 }
+
+/// A share in % with one decimal; `n/a` where the preset could not
+/// describe the scans.
+pub fn pct(x: f64) -> String {
+    if x.is_nan() {
+        "n/a".into()
+    } else {
+        format!("{:.1}", 100.0 * x)
+    }
+}
+
+/// A JSON file of the examples' results, with its path in the error.
+pub fn read_json<T: serde::de::DeserializeOwned>(
+    path: &std::path::Path,
+) -> Result<T, Box<dyn std::error::Error>> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()).into())
+}

@@ -52,7 +52,8 @@ impl KMeans {
 
     /// Every one of the `restarts` runs that [`KMeans::fit`] chooses from,
     /// in order (run r depends only on the seed and r, so the first runs of
-    /// 10 restarts are those of 3).
+    /// 10 restarts are those of 3). For callers who want the spread of the
+    /// runs (every cost, or the lowest accuracy), not only the kept one.
     pub fn runs(
         space: &Space,
         params: &impl ParamGuard<Checked = KMeansValidParams>,
