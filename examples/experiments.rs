@@ -840,6 +840,11 @@ const THIRD_ROUND_TEXT: &str = include_str!("common/sites_third_round.md");
 /// vehicle's corridor kept clear) with its test seeds 501-505.
 const FOURTH_ROUND_TEXT: &str = include_str!("common/sites_fourth_round.md");
 
+/// Issue 14, after the fourth round's test seeds: where the outdoor
+/// errors lie along the route (`examples/boundary_errors.rs`' tables, on
+/// seeds already run; nothing changed).
+const BOUNDARY_ERRORS_TEXT: &str = include_str!("common/sites_boundary_errors.md");
+
 /// The outdoor site's rows of the second round, as measured then: the
 /// third round changed the site, so they cannot be computed again.
 const SECOND_ROUND_OUTDOOR: &str = include_str!("common/sites_second_round_outdoor.md");
@@ -1032,9 +1037,10 @@ fn render_sensitivity(out: &mut String, rows: &[SensitivityRow]) -> Fmt {
 fn render_sites(out: &mut String, sites: &[SiteSection]) -> Fmt {
     writeln!(
         out,
-        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n\n{}\n",
+        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n\n{}\n\n{}\n",
         THIRD_ROUND_TEXT.trim(),
-        FOURTH_ROUND_TEXT.trim()
+        FOURTH_ROUND_TEXT.trim(),
+        BOUNDARY_ERRORS_TEXT.trim()
     )?;
     for site in sites {
         render_site(out, site)?;

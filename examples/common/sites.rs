@@ -34,7 +34,7 @@ pub fn test_seeds(scene: SceneKind) -> &'static [u64] {
     }
 }
 
-#[allow(dead_code)] // experiments.rs reads the descriptors, sites.rs not
+#[allow(dead_code)] // experiments.rs reads the descriptors, boundary_errors.rs the trees' labels, sites.rs neither
 pub struct SiteRun {
     pub sim: Simulation,
     pub truth: Vec<String>,
@@ -43,6 +43,8 @@ pub struct SiteRun {
     pub stride_labels: Vec<i32>,
     /// Hierarchical k-means++ cut at 3, clustering seeds 0-9.
     pub hk: Vec<Evaluation>,
+    /// Their labels, scan by scan (tree seeds 0-9).
+    pub hk_labels: Vec<Vec<i32>>,
 }
 
 pub fn preset(scene: SceneKind) -> DescriptorParams {
@@ -69,11 +71,15 @@ pub fn run_site(scene: SceneKind, seed: u64) -> SiteRun {
     let stride_labels = KMeans::fit(&space, &KMeansParams::new(3).seeding(Seeding::Stride))
         .unwrap()
         .labels;
-    let hk = (0..10)
+    let hk_labels: Vec<Vec<i32>> = (0..10)
         .map(|s| {
             let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(s)).unwrap();
-            evaluate(&truth, &tree.cut_k(3).unwrap().labels).unwrap()
+            tree.cut_k(3).unwrap().labels
         })
+        .collect();
+    let hk = hk_labels
+        .iter()
+        .map(|labels| evaluate(&truth, labels).unwrap())
         .collect();
     SiteRun {
         stride: evaluate(&truth, &stride_labels).unwrap(),
@@ -82,6 +88,7 @@ pub fn run_site(scene: SceneKind, seed: u64) -> SiteRun {
         descriptors,
         stride_labels,
         hk,
+        hk_labels,
     }
 }
 

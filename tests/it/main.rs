@@ -13,6 +13,7 @@ mod common;
 
 mod bad_files;
 mod bags;
+mod boundary;
 mod choose_k;
 mod cli;
 mod cli_bags;
