@@ -323,3 +323,176 @@ test('a worker frees the set of a tail when a task of another kind comes, or whe
   assert.equal(d.set.value, null, 'freed once no task came for 50 ms');
   d.dispose();
 });
+
+/**
+ * Stand-in workers for a GrowingMatrix, each a Describer running its tasks
+ * as worker.js does (a task's result comes a tick later): the filler's
+ * blocks go to a worker with nothing to run; `run` (the tail's rows) goes
+ * to the workers in turn, through the matrix's prepare. `cancel()` rejects
+ * what they hold, as the pool's does.
+ */
+class GrowingPool {
+  constructor(size) {
+    this.size = size;
+    /** @type {any} */
+    this.filler = null;
+    this.workers = Array.from({ length: size }, () => ({ d: new Describer(wasm), held: 0 }));
+    this.turn = 0;
+    /** @type {((e: Error) => void)[]} */
+    this.pending = [];
+    /** Tasks run, as [worker, type, rows]. @type {[number, string, number][]} */
+    this.log = [];
+  }
+
+  fill() {
+    for (const w of this.workers) {
+      if (w.held || !this.filler) continue;
+      const work = this.filler(w);
+      if (!work) return;
+      this.#run(w, work.task).then(work.resolve, work.reject);
+    }
+  }
+
+  /** @param {any} task */
+  async run(task) {
+    const w = this.workers[this.turn++ % this.size];
+    return this.#run(w, (await task.growing.prepare(task, w)).task);
+  }
+
+  /** @param {{d: Describer, held: number}} w @param {any} task */
+  #run(w, task) {
+    w.held++;
+    this.log.push([this.workers.indexOf(w), task.type, task.rows.length]);
+    return new Promise((resolve, reject) => {
+      this.pending.push(reject);
+      setTimeout(() => {
+        w.held--;
+        try {
+          resolve(w.d.arrivalRows(task.key, task.params, task.have, task.adds, task.rows));
+        } catch (e) {
+          reject(e);
+        }
+        this.fill();
+      });
+    });
+  }
+
+  cancel() {
+    this.filler = null;
+    for (const reject of this.pending.splice(0)) reject(new Error('cancelled'));
+  }
+
+  dispose() {
+    for (const w of this.workers) w.d.dispose();
+  }
+}
+
+/** A shuffle of 0..n-1 from a fixed seed (the order scans come back in). @param {number} n @param {number} seed */
+function shuffled(n, seed) {
+  const order = Array.from({ length: n }, (_, i) => i);
+  let s = seed;
+  for (let i = n - 1; i > 0; i--) {
+    s = (s * 1103515245 + 12345) % 2 ** 31;
+    const j = s % (i + 1);
+    [order[i], order[j]] = [order[j], order[i]];
+  }
+  return order;
+}
+
+test('the Delta matrix grown while scans come back out of order (matrix.js, GrowingMatrix) is the set\'s own, bit for bit, for blocks of any size', async () => {
+  const { GrowingMatrix } = await import('../../www/matrix.js');
+  // 37 of the 40 scans (inputs 5, 17 and 30 failed: their places are missing), n not a multiple of any block.
+  const places = scans.map((_, i) => i).filter((i) => ![5, 17, 30].includes(i));
+  const jsons = places.map((i) => scans[i].descriptorJson);
+  const own = scoped(new wasm.DescriptorSet(params, undefined), (set) => {
+    for (const j of jsons) set.addJson(j);
+    return set.deltaMatrix();
+  });
+  for (const [pairsPerTask, size, seed] of [[1, 2, 1], [7, 2, 2], [100, 3, 3], [1e9, 2, 4]]) {
+    const pool = new GrowingPool(size);
+    const grow = new GrowingMatrix(pool, params, { pairsPerTask });
+    const order = shuffled(places.length, seed);
+    for (const [k, a] of order.entries()) {
+      grow.add(places[a], jsons[a]);
+      if (k % 3 === 2) await new Promise((ok) => setTimeout(ok)); // the workers answer between arrivals
+    }
+    const blocks = pool.log.filter((t) => t[1] === 'deltaBlock');
+    assert.ok(blocks.length > 0, 'blocks were computed while the scans came');
+    assert.equal(await grow.settled(params, places.length), true);
+    const tail = pool.log.length;
+    const m = await grow.rest((t) => pool.run(t));
+    const what = `${pairsPerTask} Deltas a block, ${size} workers`;
+    assert.deepEqual(m, own, what);
+    // The rows left: one task a worker; every row was computed once.
+    assert.deepEqual(pool.log.slice(tail).map((t) => t[1]), Array(size).fill('deltaRows'), what);
+    assert.equal(pool.log.reduce((n, t) => n + t[2], 0), places.length, what);
+    if (pairsPerTask === 1) assert.ok(blocks.every((t) => t[2] === 1), 'one row a block when a row holds more Deltas than a block');
+    // Each worker was sent each descriptor at most once.
+    for (const w of pool.workers) assert.ok(w.d.places.length <= places.length);
+    pool.dispose();
+  }
+  // The engine takes it: setDeltaMatrix checks sampled pairs bit for bit.
+  const pool = new GrowingPool(2);
+  const grow = new GrowingMatrix(pool, params, { pairsPerTask: 50 });
+  for (const a of shuffled(places.length, 9)) grow.add(places[a], jsons[a]);
+  await grow.settled(params, places.length);
+  const e = new Engine(wasm);
+  e.load(params, jsons);
+  e.setMatrix(await grow.rest((t) => pool.run(t)));
+  assert.equal(e.delta(3, 17), own[3 * 37 + 17]);
+  e.dispose();
+  pool.dispose();
+});
+
+test('a grown matrix that was cancelled, or is another set\'s, is not used; a worker that lost the run\'s descriptors fails its task', async () => {
+  const { GrowingMatrix } = await import('../../www/matrix.js');
+  const jsons = scans.map((s) => s.descriptorJson);
+  const pool = new GrowingPool(2);
+  const grow = new GrowingMatrix(pool, params, { pairsPerTask: 20 });
+  for (const j of jsons.slice(0, 10)) grow.add(grow.arrivals.length, j);
+  assert.ok(pool.pending.length > 0, 'blocks in the workers');
+  // Cancel (or a new run) while blocks are in the workers: no more blocks, and the matrix is given up.
+  pool.cancel();
+  for (const j of jsons.slice(10)) grow.add(grow.arrivals.length, j);
+  assert.equal(await grow.settled(params, 40), false);
+  assert.equal(grow.cancelled, true);
+  const blocks = pool.log.length;
+  grow.add(40, jsons[0]);
+  await new Promise((ok) => setTimeout(ok, 5));
+  assert.equal(pool.log.length, blocks, 'nothing handed out after the cancel');
+  pool.dispose();
+
+  // Every scan came, but the set is of other parameters, or lacks a scan: not its matrix.
+  const q = new GrowingPool(2);
+  const g = new GrowingMatrix(q, params, { pairsPerTask: 20 });
+  for (const [i, j] of jsons.entries()) g.add(i, j);
+  assert.equal(await g.settled({ ...params }, 40), false);
+  assert.equal(await g.settled(params, 39), false);
+  assert.equal(await g.settled(params, 40), true);
+  assert.equal(g.cancelled, false);
+  q.dispose();
+
+  // A worker replaced (a new Describer) is sent from 0; one told it holds more than it does refuses.
+  const d = new Describer(wasm);
+  assert.equal(d.arrivalRows('run 1', params, 0, jsons.slice(0, 3).map((json, place) => ({ json, place })), [1, 2]).length, 3);
+  assert.throws(() => new Describer(wasm).arrivalRows('run 1', params, 3, [], [2]), /holds none of the 3 descriptors of run 1/);
+  assert.throws(() => d.arrivalRows('run 1', params, 5, [], [2]), /holds 3 of the 5 descriptors/);
+  // A new run's key starts again from 0.
+  assert.equal(d.arrivalRows('run 2', params, 0, [{ json: jsons[0], place: 0 }], [0]).length, 0);
+  assert.equal(d.places.length, 1);
+  d.dispose();
+});
+
+test('a worker keeps a run\'s growing set while tasks of any kind come, and frees it once none came for growingIdleMs', async () => {
+  const jsons = scans.slice(0, 4).map((s) => s.descriptorJson);
+  const d = new Describer(wasm, { growingIdleMs: 50 });
+  d.arrivalRows('run 1', params, 0, jsons.map((json, place) => ({ json, place })), [3]);
+  for (let k = 0; k < 3; k++) {
+    await new Promise((ok) => setTimeout(ok, 30));
+    d.taskArrives('describe');
+  }
+  assert.ok(d.growing.value, 'kept through 90 ms of describe tasks 30 ms apart');
+  await new Promise((ok) => setTimeout(ok, 100));
+  assert.equal(d.growing.value, null, 'freed once no task came for 50 ms');
+  d.dispose();
+});

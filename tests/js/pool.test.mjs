@@ -239,3 +239,91 @@ test('a run\'s tail (matrix.js): each worker gets its rows of the matrix first, 
   const sets = (w) => p.clocks.filter((c) => c.type === 'references' && c.worker === w).length;
   assert.deepEqual([sets(0), sets(1)], [7, 3], 'the fast worker did 7 sets of 10, the slow one 3');
 });
+
+test('each worker holds one of the filler\'s tasks beside its queued ones (it runs it while idle); one fails alone with its worker, and cancel drops the filler', async () => {
+  const p = pool(2);
+  const offered = [];
+  const results = [];
+  p.filler = (worker) => {
+    const k = offered.length;
+    offered.push(FakeWorker.all.indexOf(/** @type {any} */ (worker)));
+    return { task: { type: 'deltaBlock', name: `block ${k}` }, resolve: (r) => results.push(r), reject: (e) => results.push(`block ${k}: ${e.message}`) };
+  };
+  const [w0, w1] = FakeWorker.all;
+  p.fill();
+  p.fill();
+  assert.deepEqual([w0.held(), w1.held()], [['block 0'], ['block 1']], 'one each, however often asked');
+  // Scans come: each worker takes them beside its block (depth 2: block and one scan).
+  for (const name of ['a', 'b', 'c', 'd']) p.run({ type: 'describe', name }).catch(() => {});
+  assert.deepEqual([w0.held(), w1.held()], [['block 0', 'a'], ['block 1', 'b']]);
+  // The block answered: the next one comes, and the freed place takes a queued scan first.
+  w0.answer();
+  await settle();
+  assert.deepEqual(results, ['block 0']);
+  assert.deepEqual(w0.held(), ['a', 'c', 'block 2']);
+  // A worker that dies with a block: the block fails (made for that worker, it never runs elsewhere); its scan runs again.
+  w1.die();
+  await settle();
+  assert.equal(results.at(-1), 'block 1: the worker failed: out of memory');
+  const w2 = FakeWorker.all[2];
+  assert.deepEqual(w2.held(), ['b', 'block 3'], 'its scan again, alone, and a new block made for the new worker');
+  assert.deepEqual(offered, [0, 1, 0, 2]);
+  // Cancel: the filler is dropped, the blocks held reject.
+  p.cancel();
+  await settle();
+  assert.equal(p.filler, null);
+  assert.deepEqual(results.slice(-2).sort(), ['block 2: cancelled', 'block 3: cancelled']);
+  p.fill();
+  assert.equal(offered.length, 4, 'nothing offered after cancel');
+});
+
+test('a worker computes its block only while no task of its own is queued, in chunks; a task that comes waits at most one chunk (idle.js)', async () => {
+  const { IdleWork } = await import('../../www/idle.js');
+  const log = [];
+  const posted = [];
+  let t = 0;
+  /** @type {(() => void) | null} what happens while the next chunk runs */
+  let during = null;
+  const compute = (rows) => {
+    log.push(`rows ${rows}`);
+    during?.();
+    during = null;
+    return Float32Array.from(rows.flatMap((r) => Array.from({ length: r }, (_, q) => 100 * r + q)));
+  };
+  const work = new IdleWork(compute, (m) => posted.push(m), { chunkPairs: 5, now: () => ++t });
+  const tick = () => new Promise((ok) => setTimeout(ok, 1));
+  const bad = new IdleWork(() => { throw new Error('this worker holds none of the 3 descriptors of run 1'); }, (m) => posted.push(m));
+  try {
+  work.add(7, { rows: [1, 2, 3, 4, 9], key: 'k', params: {} });
+  work.taskCame(); // a scan comes before the block's first chunk
+  await new Promise((ok) => setTimeout(ok, 20));
+  assert.deepEqual(log, [], 'nothing while a scan is queued');
+  work.taskEnded();
+  await tick();
+  // Idle: chunks of at most 5 Deltas (a row of more alone), one after another, each after the messages that came.
+  assert.deepEqual(log, ['rows 1,2', 'rows 3', 'rows 4', 'rows 9']);
+  assert.equal(posted.length, 1);
+  assert.equal(posted[0].id, 7);
+  assert.deepEqual(Array.from(posted[0].result.subarray(0, 4)), [100, 200, 201, 300]);
+  assert.equal(posted[0].result.length, 19);
+  assert.equal(posted[0].clock.chunks.length, 4);
+  // A task that comes during a chunk stops the block after it, until the task ends.
+  log.length = 0;
+  during = () => work.taskCame();
+  work.add(8, { rows: [1, 2, 3, 4], key: 'k', params: {} });
+  await tick();
+  await tick();
+  assert.deepEqual(log, ['rows 1,2'], 'no chunk while the task runs');
+  work.taskEnded();
+  await tick();
+  assert.deepEqual(log, ['rows 1,2', 'rows 3', 'rows 4']);
+  assert.equal(posted.at(-1).id, 8);
+  // A chunk that fails fails its block, with the error.
+  bad.add(9, { rows: [2], key: 'k', params: {} });
+  await tick();
+  assert.deepEqual(posted.at(-1), { id: 9, ok: false, error: 'this worker holds none of the 3 descriptors of run 1' });
+  } finally {
+    work.close();
+    bad.close();
+  }
+});
