@@ -266,7 +266,10 @@ test('each worker holds one of the filler\'s tasks beside its queued ones (it ru
   await settle();
   assert.equal(results.at(-1), 'block 1: the worker failed: out of memory');
   const w2 = FakeWorker.all[2];
-  assert.deepEqual(w2.held(), ['b', 'block 3'], 'its scan again, alone, and a new block made for the new worker');
+  assert.deepEqual(w2.held(), ['b'], 'its scan again, alone: no block joins it (nor a bag)');
+  w2.answer();
+  await settle();
+  assert.deepEqual(w2.held(), ['d', 'block 3'], 'then a block made for the new worker');
   assert.deepEqual(offered, [0, 1, 0, 2]);
   // Cancel: the filler is dropped, the blocks held reject.
   p.cancel();
