@@ -8,10 +8,9 @@ const OLD_CHOOSE = 'choose categories';
 /**
  * @param {{name: string, startTime: number, duration: number, detail?: any}[]} entries the page's
  *   `placecat:` marks and measures (performance.getEntries) @param {number} timeOrigin the page's
- * @returns {{stages: Record<string, number>, workers: {tasks: number, reading: number, describing: number, replying: number, waiting: number, blocks: number, blocking: number}[], text: string}}
- *   seconds; between a worker's tasks, `blocks`: computing blocks of the Delta matrix while the scans are described
- *   (www/matrix.js, GrowingMatrix), `replying`: posting its result (and anything else before the next task
- *   starts), `waiting`: for the next task to come (neither counts the blocks)
+ * @returns {{stages: Record<string, number>, workers: {tasks: number, reading: number, describing: number, replying: number, waiting: number}[], text: string}}
+ *   seconds; between a worker's tasks, `replying`: posting its result (and anything else before the next task
+ *   starts), `waiting`: for the next task to come
  */
 export function stageBreakdown(entries, timeOrigin) {
   const sum = (name) => entries.filter((e) => e.name === `placecat:${name}`).reduce((s, e) => s + e.duration, 0) / 1000;
@@ -38,20 +37,13 @@ export function stageBreakdown(entries, timeOrigin) {
   // The choice's reference sets, in the workers beside the tree (matrix.js): from the first one's start to the last one's end.
   const sets = /** @type {any[]} */ (entries.find((e) => e.name === 'placecat:pool')?.detail ?? []).filter((c) => c.type === 'references');
   stages['reference sets (in the workers, from the first to the last)'] = sets.length ? (Math.max(...sets.map((c) => c.end)) - Math.min(...sets.map((c) => c.start))) / 1000 : 0;
-  const blockClocks = /** @type {any[]} */ (entries.find((e) => e.name === 'placecat:pool')?.detail ?? []).filter((c) => c.type === 'deltaBlock');
   const workers = [];
   for (const w of new Set(clocks.map((c) => c.worker))) {
     const mine = clocks.filter((c) => c.worker === w).sort((a, b) => a.start - b.start);
-    const blocks = blockClocks.filter((c) => c.worker === w);
-    // A block is computed in chunks between the scans (www/idle.js), each timed.
-    const chunks = blocks.flatMap((c) => c.chunks ?? [[c.start, c.end]]);
-    /** The worker's time on blocks between `from` and `to`. @param {number} from @param {number} to */
-    const blockTime = (from, to) => chunks.reduce((s, [a, b]) => s + Math.max(0, Math.min(to, b) - Math.max(from, a)), 0);
     let waiting = 0, replying = 0;
     for (let k = 1; k < mine.length; k++) {
-      const from = mine[k - 1].end;
-      const gap = Math.max(0, mine[k].start - from - blockTime(from, mine[k].start));
-      const late = Math.min(gap, Math.max(0, mine[k].arrived - from - blockTime(from, mine[k].arrived)));
+      const gap = Math.max(0, mine[k].start - mine[k - 1].end);
+      const late = Math.min(gap, Math.max(0, mine[k].arrived - mine[k - 1].end));
       waiting += late;
       replying += gap - late;
     }
@@ -61,14 +53,11 @@ export function stageBreakdown(entries, timeOrigin) {
       describing: mine.reduce((s, c) => s + (c.end - Math.max(c.read, c.start)), 0) / 1000,
       waiting: waiting / 1000,
       replying: replying / 1000,
-      blocks: blocks.length,
-      blocking: chunks.reduce((s, [a, b]) => s + b - a, 0) / 1000,
     });
   }
   const lines = Object.entries(stages).filter(([k]) => k !== OLD_CHOOSE).map(([k, v]) => `| ${k} | ${v.toFixed(2)} |`);
-  const wl = workers.map((w, i) => `| worker ${i} | ${w.tasks} | ${w.reading.toFixed(2)} | ${w.describing.toFixed(2)} | ${w.replying.toFixed(2)} | ${w.waiting.toFixed(2)} | ${w.blocks} | ${w.blocking.toFixed(2)} |`);
+  const wl = workers.map((w, i) => `| worker ${i} | ${w.tasks} | ${w.reading.toFixed(2)} | ${w.describing.toFixed(2)} | ${w.replying.toFixed(2)} | ${w.waiting.toFixed(2)} |`);
   const text = ['| stage (main thread) | s |', '|---|---|', ...lines, '',
-    '| worker | tasks | waiting for the file\'s bytes (s) | describing (s) | replying (s) | waiting for the next task (s) | Delta blocks | Delta blocks (s) |',
-    '|---|---|---|---|---|---|---|---|', ...wl].join('\n');
+    '| worker | tasks | waiting for the file\'s bytes (s) | describing (s) | replying (s) | waiting for the next task (s) |', '|---|---|---|---|---|---|', ...wl].join('\n');
   return { stages, workers, text };
 }

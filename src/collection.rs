@@ -122,24 +122,7 @@ impl Collection {
         d.validate_for(&self.params)?;
         self.names.push(name);
         self.descriptors.push(d);
-        // A prepared space grows by the new descriptor alone: a set that
-        // grows while its Deltas are computed (the page's workers, while
-        // scans are described, www/matrix.js) would otherwise prepare every
-        // descriptor again after each block (4 ms at 1,000 scans). The
-        // matrix is computed again. If the new one does not fit, the space
-        // is dropped and its next use reports why, as without it.
-        if let Some(Cache { mut space, .. }) = self.cache.take() {
-            let opts = DistanceOptions::from(&self.params);
-            if space
-                .push(&self.descriptors[self.descriptors.len() - 1], opts)
-                .is_ok()
-            {
-                self.cache = Some(Cache {
-                    space,
-                    matrix: None,
-                });
-            }
-        }
+        self.cache = None;
         Ok(self.descriptors.len() - 1)
     }
 
@@ -241,29 +224,6 @@ impl Collection {
         Ok(rows
             .iter()
             .flat_map(|&i| (i + 1..n).map(move |j| space.delta(i, j)))
-            .collect())
-    }
-
-    /// Delta of each pair (`firsts[k]`, `seconds[k]`), in order: Deltas in
-    /// any order, e.g. of scans that arrive out of order while a set grows
-    /// (the page's workers, www/matrix.js).
-    pub fn delta_pairs(&mut self, firsts: &[usize], seconds: &[usize]) -> Result<Vec<f32>> {
-        if firsts.len() != seconds.len() {
-            return Err(Error::Mismatch(format!(
-                "{} first and {} second scans of pairs",
-                firsts.len(),
-                seconds.len()
-            )));
-        }
-        let n = self.len();
-        if let Some(bad) = firsts.iter().chain(seconds).find(|&&i| i >= n) {
-            return invalid(format!("scan {bad} out of range (set has {n})"));
-        }
-        let space = self.space()?;
-        Ok(firsts
-            .iter()
-            .zip(seconds)
-            .map(|(&i, &j)| space.delta(i, j))
             .collect())
     }
 

@@ -15,12 +15,12 @@ import { Batch } from './batch.js';
 import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince, clearStages } from './stages.js';
-import { matrixInWorkers, referencesInWorkers, tailKey, oneAtATime, GrowingMatrix } from './matrix.js';
+import { matrixInWorkers, referencesInWorkers, tailKey, oneAtATime } from './matrix.js';
 
 /** @typedef {import('./state.js').State} State */
 /** How often a run shows its progress and saves its results (ms). */
 const TICK_MS = 200;
-/** From this many scans the workers compute the Delta matrix (from this many inputs, while they are described) and the choice's reference sets (below, they take milliseconds). */
+/** From this many scans the workers compute the Delta matrix and the choice's reference sets (below, they take milliseconds). */
 const WORKER_MATRIX_FROM = 200;
 let state = S.initialState();
 /**
@@ -62,16 +62,14 @@ const engine = new Engine(wasm);
 // time). A bag (or the listing of its topics)
 // has a worker to itself and reads the bag itself, in slices; a reference
 // set of the tail is held alone too, so that it goes to a free worker (matrix.js).
-// The rows left of a Delta matrix computed while the scans are described
-// are sent with the descriptors their worker lacks (GrowingMatrix).
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
   depth: 8,
   bytes: (task) => task.file?.size ?? 0,
   maxBytes: 32 * 2 ** 20,
   alone: (task) => task.type === 'bag' || task.type === 'bagTopics' || oneAtATime(task),
-  prepare: (task, worker) => task.type === 'describe' && task.file
+  prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
-    : task.growing ? task.growing.prepare(task, worker) : null,
+    : null,
 });
 const view = new View({
   onThreshold: (t) => cutTree({ threshold: t }, 'threshold'),
@@ -193,28 +191,15 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   });
   unsaved = tick;
   const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
-  // The Delta matrix of the scans described so far, in the workers' waits
-  // (matrix.js), from the first result (the parameters are known by then).
-  /** @type {GrowingMatrix | null} */
-  let growing = null;
-  const grows = inputs.length >= WORKER_MATRIX_FROM || unit === 'clouds';
-  /** @param {number} place @param {string} json */
-  const grow = (place, json) => {
-    if (!grows || !current()) return;
-    const p = /** @type {S.State['params'] & {}} */ (state.params);
-    growing ??= new GrowingMatrix(pool, p, { limit: engine.matrixLimit(p) });
-    growing.add(place, json);
-  };
   const described = describeInputs(pool, inputs, { params, byPreset }, {
     onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
     // A bag's jth cloud is stored at i + j / 1e7: after input i, before i + 1, in order.
-    onResult: (i, r, j) => (tick.add([i + j / 1e7, r]), grow(i + j / 1e7, r.descriptorJson)),
+    onResult: (i, r, j) => tick.add([i + j / 1e7, r]),
     onError: (i, e) => current() && addError(inputs[i].name, e.message),
     onProgress: (n, all) => ((shown = [n, all]), tick.add()),
   });
   knowSizes(inputs, current);
   const { results, done, total: all, suggestion, bags } = await described;
-  const grown = /** @type {GrowingMatrix | null} */ (growing); // set in callbacks, which the type check does not follow
   tick.flush();
   finished = true;
   if (unsaved === tick) unsaved = null;
@@ -226,8 +211,7 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   if (unit === 'clouds') showBags(inputs, bags);
   loadSet();
   // A cancelled run leaves the workers alone: the set computes its matrix.
-  if (done === all) await tailFromWorkers(current, grown);
-  else grown?.stop();
+  if (done === all) await tailFromWorkers(current);
   if (!current()) return;
   view.sweep('');
   await cluster();
@@ -270,32 +254,19 @@ function loadSet() {
  * The tail of the run in the workers (matrix.js): the set's Delta matrix,
  * when the set keeps one, and the reference sets of the first cut's choice,
  * when the tree's first cut is to be chosen; only from enough scans to
- * matter. The matrix's rows left by `growing` (computed while the scans
- * were described), or all of them if it failed. Returns once the matrix is
- * the set's: the reference sets come while the tree is built (cluster). If
- * the workers fail or the run is superseded, the set computes its own.
+ * matter. Returns once the matrix is the set's: the reference sets come
+ * while the tree is built (cluster). If the workers fail or the run is
+ * superseded, the set computes its own.
  * @param {() => boolean} current whether the run is still the page's
- * @param {GrowingMatrix | null} growing
  */
-async function tailFromWorkers(current, growing) {
-  growing?.stop();
+async function tailFromWorkers(current) {
   if (!state.set || state.scans.length < WORKER_MATRIX_FROM) return;
   const start = performance.now();
   const run = state.run;
-  const set = state.set;
   const params = /** @type {S.State['params'] & {}} */ (state.params);
   const jsons = state.scans.map((r) => r.descriptorJson);
   const key = tailKey();
   const m = view.method();
-  // The pool works for this run until the tail's last task settled (below),
-  // and already while the last blocks of the growing matrix come back.
-  tailOf = run;
-  const grown = set.usesMatrix && growing ? await growing.settled(params, jsons.length) : false;
-  if (!current() || growing?.cancelled) {
-    // Cancel or a new run meanwhile: the set computes its own matrix.
-    if (tailOf === run) tailOf = null;
-    return;
-  }
   // Every task of the tail, so that the pool counts as busy until the last
   // settles: the matrix's or the reference sets' promise settles at the
   // first failure, while the rest may still be queued (and then a Cancel or
@@ -303,11 +274,13 @@ async function tailFromWorkers(current, growing) {
   /** @type {Promise<unknown>[]} */
   const tasks = [];
   const tracked = { size: pool.size, run: (/** @type {any} */ task) => { const p = pool.run(task); tasks.push(p); return p; } };
-  const matrix = !set.usesMatrix ? null : grown && growing ? growing.rest(tracked.run) : matrixInWorkers(tracked, params, jsons, key);
+  const matrix = state.set.usesMatrix ? matrixInWorkers(tracked, params, jsons, key) : null;
   const dispersions = m.method === 'hkmeans' && 'auto' in S.nextCut(state)
     ? referencesInWorkers(tracked, params, jsons, { seed: m.hkSeed, sets: engine.referenceSets() }, key).catch(() => null)
     : null;
-  if (dispersions) references = { set, seed: m.hkSeed, dispersions };
+  if (dispersions) references = { set: state.set, seed: m.hkSeed, dispersions };
+  if (!matrix && !dispersions) return;
+  tailOf = run;
   Promise.allSettled(tasks).then(() => tailOf === run && (tailOf = null));
   if (!matrix) return;
   try {

@@ -161,11 +161,6 @@ export class Engine {
     return { k: choice.k, why: choiceReason(choice) };
   }
 
-  /** The most scans a set with these parameters keeps a Delta matrix for. @param {Params} params @returns {number} */
-  matrixLimit(params) {
-    return scoped(new this.wasm.DescriptorSet(params, undefined), (set) => set.matrixLimit);
-  }
-
   /** How many reference sets the choice of categories draws. @returns {number} */
   referenceSets() {
     return this.set.get('scans').referenceSets;
@@ -276,22 +271,12 @@ export function scanResult(scan) {
 
 export class Describer {
   /**
-   * @param {Wasm} wasm @param {{tailIdleMs?: number, growingIdleMs?: number}} [how] `tailIdleMs`: how long the set of a
-   *   tail is kept after its last task (the next comes within a message's round trip, or once the page's tree is built);
-   *   `growingIdleMs`: how long the growing set of a run (arrivalRows) is kept after the last task of any kind (a run's
-   *   tasks come one after another; its tail's, once the last scan is described)
+   * @param {Wasm} wasm @param {{tailIdleMs?: number}} [how] `tailIdleMs`: how long the set of a tail is kept
+   *   after its last task (the next comes within a message's round trip, or once the page's tree is built)
    */
-  constructor(wasm, { tailIdleMs = 5000, growingIdleMs = 30000 } = {}) {
+  constructor(wasm, { tailIdleMs = 5000 } = {}) {
     this.wasm = wasm;
     this.tailIdleMs = tailIdleMs;
-    this.growingIdleMs = growingIdleMs;
-    /** @type {ReturnType<typeof setTimeout> | undefined} */
-    this.growingTimer = undefined;
-    /** @type {Slot<import('./pkg/placecat.js').DescriptorSet>} the descriptors of a run as they came (arrivalRows) */
-    this.growing = new Slot();
-    this.growingKey = '';
-    /** @type {number[]} each one's place in the run's set (the order of its inputs) */
-    this.places = [];
     /** @type {ReturnType<typeof setTimeout> | undefined} */
     this.tailTimer = undefined;
     /** @type {Slot<import('./pkg/placecat.js').Simulator>} */
@@ -338,54 +323,6 @@ export class Describer {
   }
 
   /**
-   * Rows of the Delta matrix of a run's scans in the order they were
-   * described (matrix.js, GrowingMatrix): the descriptors `adds` join this
-   * worker's set of the run `key` (which holds `have` already, from its
-   * earlier tasks; 0 starts it), each with its place in the run's set (the
-   * order of its inputs); then, for each arrival r of `rows`, the Delta to
-   * every earlier arrival q < r, in order of q, taken the way the set takes
-   * its own matrix (the scan of the lower place first), so that the values
-   * are that matrix's bit for bit.
-   * @param {string} key @param {Params} params @param {number} have @param {{json: string, place: number}[]} adds
-   * @param {number[]} rows @returns {Float32Array}
-   */
-  arrivalRows(key, params, have, adds, rows) {
-    if (have === 0 && (key !== this.growingKey || this.places.length > 0)) {
-      this.growing.set(new this.wasm.DescriptorSet(params, undefined));
-      this.growingKey = key;
-      this.places = [];
-    }
-    if (key !== this.growingKey || !this.growing.value || this.places.length !== have) {
-      throw new Error(`this worker holds ${key === this.growingKey ? this.places.length : 'none'} of the ${have} descriptors of ${key}`);
-    }
-    const set = this.growing.value;
-    for (const { json, place } of adds) {
-      set.addJson(json);
-      this.places.push(place);
-    }
-    this.#keepGrowing();
-    const pairs = rows.reduce((sum, r) => sum + r, 0);
-    const firsts = new Uint32Array(pairs), seconds = new Uint32Array(pairs);
-    let at = 0;
-    for (const r of rows) {
-      for (let q = 0; q < r; q++, at++) {
-        const rFirst = this.places[r] < this.places[q];
-        firsts[at] = rFirst ? r : q;
-        seconds[at] = rFirst ? q : r;
-      }
-    }
-    return set.deltaPairs(firsts, seconds);
-  }
-
-  /** Free the growing set of a run, if any. */
-  endGrowing() {
-    clearTimeout(this.growingTimer);
-    this.growing.clear();
-    this.growingKey = '';
-    this.places = [];
-  }
-
-  /**
    * The reference sets `which` of the choice of categories for a tree of
    * `seed`, in a set of these descriptors: this worker's share of the choice.
    * @param {string} key @param {Params} params @param {string[]} descriptorJsons @param {number} seed @param {number[]} which
@@ -402,13 +339,6 @@ export class Describer {
    */
   taskArrives(type) {
     if (type !== 'deltaRows' && type !== 'references') this.endTail();
-    if (this.growing.value) this.#keepGrowing();
-  }
-
-  /** The growing set ends when no task of any kind comes within growingIdleMs. */
-  #keepGrowing() {
-    clearTimeout(this.growingTimer);
-    this.growingTimer = setTimeout(() => this.endGrowing(), this.growingIdleMs);
   }
 
   /** Free the set of the tail, if any. */
@@ -482,6 +412,5 @@ export class Describer {
     this.simulator.clear();
     this.model.clear();
     this.endTail();
-    this.endGrowing();
   }
 }

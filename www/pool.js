@@ -9,21 +9,8 @@
 // it held alone fails, tasks it held together run again, each alone, so
 // that the one that kills a worker is the one that fails. A task may send
 // partial replies before its result (a bag's clouds, bag.js).
-// A filler (`fill`) may give each worker one task of its own to hold, which
-// the worker runs only while it has nothing else to run (idle.js): a block
-// of the Delta matrix of the scans described so far (matrix.js), computed
-// in the waits for the next file.
 
-/**
- * `filler`: the filler's, made for its worker (never run elsewhere).
- * @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, alone: boolean,
- *   filler?: boolean}} Job
- */
-/**
- * Work a worker holds and runs while it has nothing else to run, made for that worker: a task and what to do with its
- * result; null: none now.
- * @typedef {(worker: Worker) => {task: any, resolve: (r: any) => void, reject: (e: Error) => void} | null} Filler
- */
+/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, alone: boolean}} Job */
 /** @typedef {{worker: Worker, jobs: Job[]}} WorkerSlot `jobs`: posted to the worker, not answered yet, oldest first */
 /**
  * When a task was posted, came to its worker, started, had its file's
@@ -35,10 +22,10 @@
 export class WorkerPool {
   /**
    * @param {URL} url the worker module @param {number} [size]
-   * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any, worker: Worker) => Promise<{task: any, transfer: Transferable[]}> | null,
+   * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any) => Promise<{task: any, transfer: Transferable[]}> | null,
    *   bytes?: (task: any) => number, maxBytes?: number}} [how]
    *   `depth`: tasks a worker holds at once; `alone`: the tasks that get a worker to themselves; `prepare`: work on the
-   *   main thread before a task is posted to `worker` (none: null), e.g. reading its file, whose failure is the task's;
+   *   main thread before a task is posted (none: null), e.g. reading its file, whose failure is the task's;
    *   `bytes`: what a task holds in memory (its file), `maxBytes`: a worker takes another task only while the tasks
    *   it holds stay within this many bytes (it always takes one)
    */
@@ -57,8 +44,6 @@ export class WorkerPool {
     this.nextId = 1;
     /** @type {TaskClock[]} the tasks that ended (a run empties it as it begins) */
     this.clocks = [];
-    /** @type {Filler | null} work for idle workers (`fill`) */
-    this.filler = null;
     for (let i = 0; i < size; i++) this.slots.push(this.#spawn());
   }
 
@@ -79,15 +64,11 @@ export class WorkerPool {
     /** @param {Event & {message?: string}} [e] */
     const die = (e) => {
       e?.preventDefault?.();
-      const failed = new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`);
-      const held = slot.jobs.splice(0);
-      // The filler's tasks were made for this worker: they fail, and never run elsewhere.
-      for (const j of held.filter((j) => j.filler)) j.reject(failed);
-      const jobs = held.filter((j) => !j.filler);
+      const jobs = slot.jobs.splice(0);
       worker.terminate();
       const i = this.slots.indexOf(slot);
       if (i >= 0) this.slots[i] = this.#spawn();
-      if (held.length === 1) jobs[0]?.reject(failed);
+      if (jobs.length === 1) jobs[0].reject(new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`));
       else this.queue.unshift(...jobs.map((j) => ({ ...j, alone: true })));
       this.#pump();
     };
@@ -96,13 +77,8 @@ export class WorkerPool {
     return slot;
   }
 
-  /** Hand queued tasks to the workers: one to each idle worker first, then up to `depth` (and `maxBytes`) each; then the filler's work. */
+  /** Hand queued tasks to the workers: one to each idle worker first, then up to `depth` (and `maxBytes`) each. */
   #pump() {
-    this.#handQueued();
-    this.fill();
-  }
-
-  #handQueued() {
     for (let held = 0; held < this.depth; held++) {
       for (const slot of this.slots) {
         const next = this.queue[0];
@@ -115,25 +91,6 @@ export class WorkerPool {
     }
   }
 
-  /**
-   * Give each worker that holds none of the filler's tasks one, if the
-   * filler has work (beside its queued tasks: it holds no file). The pool
-   * calls it whenever a task ends or comes; call it when the filler has
-   * new work.
-   */
-  fill() {
-    if (!this.filler) return;
-    for (const slot of this.slots) {
-      if (slot.jobs.some((j) => j.filler || j.alone)) continue; // a bag keeps its worker to itself
-      const work = this.filler(slot.worker);
-      if (!work) return;
-      /** @type {Job} */
-      const job = { id: this.nextId++, alone: false, filler: true, ...work };
-      slot.jobs.push(job);
-      this.#post(slot, job);
-    }
-  }
-
   /** Whether `job` joins what `slot` holds within `maxBytes`. @param {WorkerSlot} slot @param {Job} job */
   #fits(slot, job) {
     return slot.jobs.reduce((sum, j) => sum + this.bytes(j.task), this.bytes(job.task)) <= this.maxBytes;
@@ -142,7 +99,7 @@ export class WorkerPool {
   /** Post a job, once `prepare` (if it has work for the task) is done; a job dropped meanwhile is not posted. @param {WorkerSlot} slot @param {Job} job */
   #post(slot, job) {
     job.posted = performance.timeOrigin + performance.now();
-    const prepared = job.filler ? null : this.prepare(job.task, slot.worker);
+    const prepared = this.prepare(job.task);
     if (!prepared) return slot.worker.postMessage({ id: job.id, task: job.task });
     prepared.then(({ task, transfer }) => {
       if (slot.jobs.includes(job)) slot.worker.postMessage({ id: job.id, task }, transfer);
@@ -191,9 +148,8 @@ export class WorkerPool {
     return done;
   }
 
-  /** Drop queued tasks and the filler, and stop running tasks (their promises reject). */
+  /** Drop queued tasks and stop running ones (their promises reject). */
   cancel() {
-    this.filler = null;
     const cancelled = new Error('cancelled');
     for (const job of this.queue.splice(0)) job.reject(cancelled);
     this.slots = this.slots.map((slot) => {

@@ -1,26 +1,16 @@
 // One wasm instance per worker. Each task describes one scan (its bytes,
 // read and moved here by the page, pool.js; memory holds the bytes of the
 // tasks the worker holds: up to eight, within 32 MB, with the page's pool),
-// simulates one demo scan, computes rows of the Delta matrix (of the scans
-// described so far, or at the end) or reference sets of the choice of
-// categories (matrix.js), or classifies one scan
+// simulates one demo scan, computes rows of the Delta matrix or reference
+// sets of the choice of categories (matrix.js), or classifies one scan
 // with a model; the engine does the wasm work. A ROS bag is read in
 // slices and its clouds posted one at a time as partial replies
 // (bagreader.js).
 import init, * as wasm from './pkg/placecat.js';
 import { Describer } from './engine.js';
 import { bagTopics, describeBag } from './bagreader.js';
-import { IdleWork } from './idle.js';
 
 const ready = init().then(() => new Describer(wasm));
-/** @type {Describer | null} */
-let describer = null;
-ready.then((d) => (describer = d));
-/** The blocks of a run's Delta matrix, computed while no task is queued here (idle.js). */
-const idle = new IdleWork(
-  (rows, block) => /** @type {Describer} */ (describer).arrivalRows(block.key, block.params, /** @type {Describer} */ (describer).places.length, [], rows),
-  (message, transfer) => self.postMessage(message, { transfer }),
-);
 
 /** Wall-clock ms, comparable across the page and its workers (performance.now() is not). */
 const now = () => performance.timeOrigin + performance.now();
@@ -41,7 +31,6 @@ async function run(task, partial, clock, file) {
     if (task.byPreset) return describer.describeSuggesting(bytes, task.name, task.byPreset, task.previewPoints);
     return describer.describe(bytes, task.name, task.params, task.previewPoints);
   }
-  if (task.adds) return describer.arrivalRows(task.key, task.params, task.have, task.adds, task.rows); // the rows left of a growing matrix
   if (task.type === 'deltaRows') return describer.deltaRows(task.key, task.params, task.descriptorJsons, task.rows);
   if (task.type === 'references') return describer.referenceDispersions(task.key, task.params, task.descriptorJsons, task.seed, task.which);
   if (task.type === 'simulate') return describer.simulate(task, task.params, task.previewPoints);
@@ -56,30 +45,13 @@ let queue = Promise.resolve();
 
 self.onmessage = (e) => {
   const { id, task } = e.data;
-  if (task.type === 'deltaBlock') return takeBlock(id, task);
   // The file's bytes, read by the page (pool.js) or read here now, while the task before is described.
   const reads = task.type === 'describe' || task.type === 'classify';
   const file = task.bytes ? Promise.resolve(/** @type {ArrayBuffer} */ (task.bytes)) : reads ? /** @type {File} */ (task.file).arrayBuffer() : null;
   file?.catch(() => {}); // its error is the task's, when the task awaits it
   const arrived = now();
-  idle.taskCame();
-  queue = queue.then(() => runAndReply(id, task, file, arrived)).then(() => idle.taskEnded());
+  queue = queue.then(() => runAndReply(id, task, file, arrived));
 };
-
-/**
- * A block of a run's Delta matrix: its descriptors join the worker's set
- * now (before any task that came after it reads the set), its rows are
- * computed while the worker is idle.
- * @param {number} id @param {any} task
- */
-async function takeBlock(id, task) {
-  try {
-    (await ready).arrivalRows(task.key, task.params, task.have, task.adds, []);
-  } catch (err) {
-    return self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });
-  }
-  idle.add(id, task);
-}
 
 /** @param {number} id @param {any} task @param {Promise<ArrayBuffer> | null} file @param {number} arrived */
 async function runAndReply(id, task, file, arrived) {

@@ -3,8 +3,8 @@
 //! docs/design.md#clustering).
 
 use super::{
-    check_parts, check_shape, delta_prepared, matrix_distance, prepare_all, size_factor,
-    DistanceMatrix, DistanceOptions, Prepared,
+    delta_prepared, matrix_distance, prepare_all, size_factor, DistanceMatrix, DistanceOptions,
+    Prepared,
 };
 use crate::descriptor::parts::parts_distance;
 use crate::descriptor::{Descriptor, Metric};
@@ -39,18 +39,6 @@ impl Space {
             items: prepare_all(descriptors, opts)?,
             metric: opts.metric,
         })
-    }
-
-    /// Prepare one more descriptor and append it, with the checks of
-    /// [`Space::new`] (its shape and parts against the first item's).
-    pub fn push(&mut self, d: &Descriptor, opts: DistanceOptions) -> Result<()> {
-        let p = Prepared::new(d, opts)?;
-        if let Some(first) = self.items.first() {
-            check_shape((p.rows, p.cols), (first.rows, first.cols))?;
-            check_parts(&p, first)?;
-        }
-        self.items.push(p);
-        Ok(())
     }
 
     /// Number of scans.

@@ -58,19 +58,6 @@ impl DescriptorSet {
         let rows: Vec<usize> = rows.iter().map(|&i| i as usize).collect();
         Ok(js_sys::Float32Array::from(&self.set.delta_rows(&rows)?[..]))
     }
-    /// Delta of each pair (`firsts[k]`, `seconds[k]`), in order (Deltas of
-    /// scans in any order, e.g. as a set grows).
-    #[wasm_bindgen(js_name = deltaPairs)]
-    pub fn delta_pairs(
-        &mut self,
-        firsts: &[u32],
-        seconds: &[u32],
-    ) -> WasmResult<js_sys::Float32Array> {
-        let index = |v: &[u32]| v.iter().map(|&i| i as usize).collect::<Vec<_>>();
-        Ok(js_sys::Float32Array::from(
-            &self.set.delta_pairs(&index(firsts), &index(seconds))?[..],
-        ))
-    }
     /// Use this n x n Delta matrix (row-major, e.g. assembled from
     /// `deltaRows` of an equal set) instead of computing it; refused unless
     /// n x n, zero on the diagonal and symmetric.

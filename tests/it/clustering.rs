@@ -405,46 +405,6 @@ fn a_one_scan_category_is_near_to_its_own_scan_and_far_from_others() {
 }
 
 #[test]
-fn a_set_grown_after_its_deltas_were_used_gives_the_deltas_of_a_fresh_set_and_pairs_in_any_order() {
-    use placecat::Collection;
-    let (ds, _) = sim_set(4, 12);
-    let params = DescriptorParams::indoor();
-    let named = |ds: &[placecat::Descriptor]| {
-        ds.iter()
-            .enumerate()
-            .map(|(i, d)| (format!("s{i}"), d.clone()))
-            .collect::<Vec<_>>()
-    };
-    let n = ds.len();
-    let mut fresh = Collection::from_parts(params.clone(), named(&ds)).unwrap();
-    // Grown one scan at a time, its space used (so prepared) after each.
-    let mut grown = Collection::new(params.clone()).unwrap();
-    for (k, d) in ds.iter().enumerate() {
-        grown.push(format!("s{k}"), d.clone()).unwrap();
-        if k > 0 {
-            assert_eq!(grown.delta(k, 0).unwrap(), fresh.delta(k, 0).unwrap());
-        }
-    }
-    let (firsts, seconds): (Vec<usize>, Vec<usize>) = (0..n)
-        .flat_map(|i| (0..n).map(move |j| (i, j)))
-        .rev()
-        .unzip();
-    let got = grown.delta_pairs(&firsts, &seconds).unwrap();
-    let want = fresh.matrix().unwrap().clone();
-    for (k, v) in got.iter().enumerate() {
-        assert_eq!(
-            v.to_bits(),
-            want.get(firsts[k], seconds[k]).to_bits(),
-            "pair {k}"
-        );
-    }
-    assert_eq!(grown.matrix().unwrap().data, want.data, "bit for bit");
-    assert!(grown.delta_pairs(&[0, 1], &[1]).is_err());
-    let e = grown.delta_pairs(&[0], &[n]).unwrap_err();
-    assert!(e.to_string().contains("out of range"), "{e}");
-}
-
-#[test]
 fn a_matrix_assembled_from_shares_of_rows_is_the_matrix_and_a_bad_one_is_refused() {
     use placecat::Collection;
     let (ds, _) = sim_set(4, 12);

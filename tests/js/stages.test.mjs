@@ -28,23 +28,3 @@ test('the workers\' table counts the scans\' tasks only, not the Delta matrix\'s
   assert.equal(stages['choose categories'], 0.12);
   assert.equal(text.match(/^\| choose categories/gm)?.length, 1);
 });
-
-test('blocks of the Delta matrix computed while the scans are described count as neither waiting nor replying', () => {
-  const clock = (type, worker, arrived, start, end) => ({ type, worker, posted: arrived - 1, arrived, start, read: start, end, received: end + 1 });
-  const entries = [{ name: 'placecat:pool', startTime: 0, duration: 0, detail: [
-    // Worker 0: a scan ends at 110; a block runs 112-140; the next scan came at 130, started at 141 (after the block).
-    clock('describe', 0, 90, 100, 110), clock('deltaBlock', 0, 111, 112, 140), clock('describe', 0, 130, 141, 150),
-    // and one more, 5 ms later than it came, no block between.
-    clock('describe', 0, 151, 156, 160),
-    // A block computed in two chunks around a scan: 161-163, (scan 163-170), 171-172.
-    { ...clock('deltaBlock', 0, 160, 161, 172), chunks: [[161, 163], [171, 172]] }, clock('describe', 0, 162, 163, 170), clock('describe', 0, 172, 173, 180),
-  ] }];
-  const [w] = stageBreakdown(entries, 0).workers;
-  assert.equal(w.blocks, 2);
-  assert.equal(w.blocking.toFixed(3), '0.031');
-  // Gaps: 110-141 with the block's 28 ms: 3 ms left, of which waiting 130 - 110 - 18 (block until 130) = 2, replying 1; then 150-156:
-  // waiting 1, replying 5; 160-163 with a chunk of 2 (161-163): the scan came at 162, idle 160-161 is waiting; 170-173 with a chunk
-  // of 1 (171-172): the scan came at 172, waiting 1, replying 1.
-  assert.equal(w.waiting.toFixed(3), '0.005');
-  assert.equal(w.replying.toFixed(3), '0.007');
-});
