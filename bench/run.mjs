@@ -151,7 +151,13 @@ if (process.env.BENCH_BASE_WWW) {
     const [before, after] = k % 2 ? [r2, r1] : [r1, r2];
     // `main`: the CPU of the page's main thread (the renderer's "chromium" thread).
     const main = (r) => r.cpu.kinds.find(([k]) => k === 'renderer: chromium')?.[1] ?? 0;
-    pairs.push({ before: { seconds: before.seconds, cpu: before.cpu.total, main: main(before) }, after: { seconds: after.seconds, cpu: after.cpu.total, main: main(after) } });
+    // `describe`: the page's describe stage; `tail`: the run's stages after it (matrix, tree, choice).
+    const split = (r) => {
+      const { stages } = stageBreakdown(r.entries, r.timeOrigin);
+      return { describe: stages['describe (all scans)'], tail: stages['run (from the first task)'] - stages['describe (all scans)'] };
+    };
+    const row = (r) => ({ seconds: r.seconds, cpu: r.cpu.total, main: main(r), ...split(r) });
+    pairs.push({ before: row(before), after: row(after) });
     console.log('pair', pairs.at(-1));
     own = after;
   }
