@@ -143,20 +143,23 @@ if (process.env.BENCH_BASE_WWW) {
   const baseDir = resolve(process.env.BENCH_BASE_WWW);
   const baseServer = await serve(baseDir, 0);
   const basePage = `http://127.0.0.1:${baseServer.address().port}/index.html`;
+  // A pair's row of one run. `main`: the CPU of the page's main thread (the
+  // renderer's "chromium" thread); `describe`: the page's describe stage;
+  // `tail`: everything of the run after it (loading the descriptors, matrix,
+  // tree, choice, cut, draw), so a little more than the table's tail below,
+  // which counts the matrix, tree and choice only.
+  const main = (r) => r.cpu.kinds.find(([k]) => k === 'renderer: chromium')?.[1] ?? 0;
+  const split = (r) => {
+    const { stages } = stageBreakdown(r.entries, r.timeOrigin);
+    return { describe: stages['describe (all scans)'], tail: stages['run (from the first task)'] - stages['describe (all scans)'] };
+  };
+  const row = (r) => ({ seconds: r.seconds, cpu: r.cpu.total, main: main(r), ...split(r) });
   const pairs = [];
   for (let k = 0; k < Number(process.env.BENCH_PAIRS || 3); k++) {
     // Alternated, this build first on odd pairs: neither always runs on a warmer machine.
     const [first, second] = k % 2 ? [ownPage, basePage] : [basePage, ownPage];
     const r1 = await pageRun(first), r2 = await pageRun(second);
     const [before, after] = k % 2 ? [r2, r1] : [r1, r2];
-    // `main`: the CPU of the page's main thread (the renderer's "chromium" thread).
-    const main = (r) => r.cpu.kinds.find(([k]) => k === 'renderer: chromium')?.[1] ?? 0;
-    // `describe`: the page's describe stage; `tail`: the run's stages after it (matrix, tree, choice).
-    const split = (r) => {
-      const { stages } = stageBreakdown(r.entries, r.timeOrigin);
-      return { describe: stages['describe (all scans)'], tail: stages['run (from the first task)'] - stages['describe (all scans)'] };
-    };
-    const row = (r) => ({ seconds: r.seconds, cpu: r.cpu.total, main: main(r), ...split(r) });
     pairs.push({ before: row(before), after: row(after) });
     console.log('pair', pairs.at(-1));
     own = after;

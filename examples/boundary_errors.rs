@@ -98,18 +98,16 @@ struct SeedResult {
     auto: MethodResult,
 }
 
-/// Scan by scan: is `labels`' cluster mapped (as `evaluate` maps it) to the
-/// scan's true kind, and how far is the scan from a change.
-fn tally(truth: &[String], labels: &[i32], to_change: &[Option<f64>], range: f64) -> MethodResult {
-    let e: Evaluation = evaluate(truth, labels).unwrap();
-    let kind_of = |l: i32| {
-        e.confusion
-            .cluster_class
-            .iter()
-            .find(|(k, _)| *k == l)
-            .and_then(|(_, c)| c.clone())
-            .unwrap_or_else(|| "unassigned".into())
-    };
+/// Scan by scan: is `labels`' cluster mapped (as `evaluate` mapped it in
+/// `e`) to the scan's true kind, and how far is the scan from a change.
+fn tally(
+    truth: &[String],
+    labels: &[i32],
+    e: &Evaluation,
+    to_change: &[Option<f64>],
+    range: f64,
+) -> MethodResult {
+    let kind_of = |l: i32| e.confusion.class_of(l).unwrap_or("unassigned").to_string();
     let mut t = Tally::default();
     let mut wrong = vec![];
     for (i, (kind, &l)) in truth.iter().zip(labels).enumerate() {
@@ -164,13 +162,15 @@ fn run(seed: u64, range: f64) -> SeedResult {
     // The demo's path: what `placecat cluster --method hkmeans
     // --categories auto --seed 0` does with the same descriptors.
     let names = (0..n).map(|i| format!("scan_{i:04}"));
-    let mut set = Collection::from_parts(params, names.zip(run.descriptors.clone())).unwrap();
-    let hk = HkMeansParams::new(0);
-    let tree = set.hkmeans(&hk).unwrap();
+    // Tree seed 0 is run_site's first tree (the same space from the same
+    // descriptors).
+    let mut set = Collection::from_parts(params, names.zip(run.descriptors)).unwrap();
+    let (tree, hk) = (&run.hk_trees[0], HkMeansParams::new(0));
     let choice = set
-        .choose_categories(Clusterer::Tree(&tree, &hk), &ChooseKParams::default())
+        .choose_categories(Clusterer::Tree(tree, &hk), &ChooseKParams::default())
         .unwrap();
     let auto_labels = tree.cut_k(choice.k).unwrap().labels;
+    let auto_eval = evaluate(&run.truth, &auto_labels).unwrap();
     SeedResult {
         seed,
         scans: n,
@@ -187,13 +187,28 @@ fn run(seed: u64, range: f64) -> SeedResult {
         metres_to_other_kind: (0..n)
             .map(|i| tenth(to_other_kind(&positions, &run.truth, i)))
             .collect(),
-        stride: tally(&run.truth, &run.stride_labels, &to_change, range),
+        stride: tally(
+            &run.truth,
+            &run.stride_labels,
+            &run.stride,
+            &to_change,
+            range,
+        ),
         hk3: run
-            .hk_labels
+            .hk_trees
             .iter()
-            .map(|l| tally(&run.truth, l, &to_change, range))
+            .zip(&run.hk)
+            .map(|(tree, e)| {
+                tally(
+                    &run.truth,
+                    &tree.cut_k(3).unwrap().labels,
+                    e,
+                    &to_change,
+                    range,
+                )
+            })
             .collect(),
-        auto: tally(&run.truth, &auto_labels, &to_change, range),
+        auto: tally(&run.truth, &auto_labels, &auto_eval, &to_change, range),
     }
 }
 
@@ -225,7 +240,7 @@ fn row(label: &str, near: usize, scans: usize, t: &Tally, per: usize) -> String 
         pct(t.accuracy()),
         count(t.wrong),
         count(t.wrong_near),
-        pct(1.0 - (t.wrong - t.far_wrong) as f64 / (t.scans - t.far) as f64),
+        pct(1.0 - t.wrong_near as f64 / (t.scans - t.far) as f64),
         pct(t.far_accuracy()),
         scans - near
     )
@@ -262,10 +277,9 @@ const METHODS: [(&str, Pick); 3] = [
 /// One markdown table a method: a row a seed and a row a group of seeds.
 fn tables(results: &[SeedResult], range: f64) -> String {
     let mut out = String::new();
-    type Group = (&'static str, fn(u64) -> bool);
-    let groups: [Group; 2] = [
-        ("development seeds", |s| s <= 10),
-        ("test seeds (seen)", |s| s > 500),
+    let groups = [
+        ("development seeds", sites::dev_seeds(SceneKind::Outdoor)),
+        ("test seeds (seen)", sites::test_seeds(SceneKind::Outdoor)),
     ];
     for (title, pick) in METHODS {
         write!(
@@ -273,8 +287,11 @@ fn tables(results: &[SeedResult], range: f64) -> String {
             "{title}:\n\n| seed | scans within {range:.0} m of a change | accuracy | wrong | of them within {range:.0} m | accuracy within {range:.0} m | accuracy further than {range:.0} m (scans) |\n|---|---|---|---|---|---|---|\n"
         )
         .unwrap();
-        for (name, member) in groups {
-            let sel: Vec<&SeedResult> = results.iter().filter(|r| member(r.seed)).collect();
+        for (name, members) in &groups {
+            let sel: Vec<&SeedResult> = results
+                .iter()
+                .filter(|r| members.contains(&r.seed))
+                .collect();
             if sel.is_empty() {
                 continue;
             }

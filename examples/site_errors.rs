@@ -352,11 +352,9 @@ fn main() {
         let mapped = |l: i32| {
             run.stride
                 .confusion
-                .cluster_class
-                .iter()
-                .find(|(k, _)| *k == l)
-                .and_then(|(_, c)| c.clone())
+                .class_of(l)
                 .unwrap_or_default()
+                .to_string()
         };
         // Heading change over +-10 m of route.
         let heading = |i: usize| stops[i].heading;

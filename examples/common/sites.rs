@@ -43,8 +43,8 @@ pub struct SiteRun {
     pub stride_labels: Vec<i32>,
     /// Hierarchical k-means++ cut at 3, clustering seeds 0-9.
     pub hk: Vec<Evaluation>,
-    /// Their labels, scan by scan (tree seeds 0-9).
-    pub hk_labels: Vec<Vec<i32>>,
+    /// Their trees (tree seeds 0-9), for other cuts of the same trees.
+    pub hk_trees: Vec<Tree>,
 }
 
 pub fn preset(scene: SceneKind) -> DescriptorParams {
@@ -71,15 +71,12 @@ pub fn run_site(scene: SceneKind, seed: u64) -> SiteRun {
     let stride_labels = KMeans::fit(&space, &KMeansParams::new(3).seeding(Seeding::Stride))
         .unwrap()
         .labels;
-    let hk_labels: Vec<Vec<i32>> = (0..10)
-        .map(|s| {
-            let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(s)).unwrap();
-            tree.cut_k(3).unwrap().labels
-        })
+    let hk_trees: Vec<Tree> = (0..10)
+        .map(|s| HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(s)).unwrap())
         .collect();
-    let hk = hk_labels
+    let hk = hk_trees
         .iter()
-        .map(|labels| evaluate(&truth, labels).unwrap())
+        .map(|tree| evaluate(&truth, &tree.cut_k(3).unwrap().labels).unwrap())
         .collect();
     SiteRun {
         stride: evaluate(&truth, &stride_labels).unwrap(),
@@ -88,7 +85,7 @@ pub fn run_site(scene: SceneKind, seed: u64) -> SiteRun {
         descriptors,
         stride_labels,
         hk,
-        hk_labels,
+        hk_trees,
     }
 }
 
@@ -186,12 +183,7 @@ pub fn strip_svg(truth: &[String], e: &Evaluation, labels: &[i32]) -> String {
             r#"<rect x="{x}" y="10" width="{w}" height="18" fill="{}"/>"#,
             color(Some(&truth[i]))
         );
-        let mapped = e
-            .confusion
-            .cluster_class
-            .iter()
-            .find(|(k, _)| *k == labels[i])
-            .and_then(|(_, c)| c.as_deref());
+        let mapped = e.confusion.class_of(labels[i]);
         s += &format!(
             r#"<rect x="{x}" y="40" width="{w}" height="18" fill="{}"/>"#,
             color(mapped)
@@ -275,13 +267,7 @@ pub fn map_svg(run: &SiteRun, kinds: &[&str]) -> String {
     for i in 0..sim.len() {
         let p = sim.sensor_pose(i).position;
         let (x, y) = xy(p[0], p[1]);
-        let mapped = run
-            .stride
-            .confusion
-            .cluster_class
-            .iter()
-            .find(|(k, _)| *k == run.stride_labels[i])
-            .and_then(|(_, c)| c.as_deref());
+        let mapped = run.stride.confusion.class_of(run.stride_labels[i]);
         write!(
             s,
             r#"<circle cx="{x:.1}" cy="{y:.1}" r="3.2" fill="{}" stroke="{}" stroke-width="1.6"/>"#,

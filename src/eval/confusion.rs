@@ -39,6 +39,17 @@ pub struct Confusion {
     pub cluster_class: Vec<(i32, Option<String>)>,
 }
 
+impl Confusion {
+    /// The class cluster `label` was mapped to; None for noise, a cluster
+    /// mapped to no class, or a label not in the clustering.
+    pub fn class_of(&self, label: i32) -> Option<&str> {
+        self.cluster_class
+            .iter()
+            .find(|(k, _)| *k == label)
+            .and_then(|(_, c)| c.as_deref())
+    }
+}
+
 /// The confusion matrix of `labels` (-1 = noise) against the class names
 /// `truth`, one of each per scan.
 pub fn confusion(truth: &[String], labels: &[i32]) -> Confusion {

@@ -49,6 +49,8 @@ fn hungarian_mapping_on_a_hand_made_confusion() {
             (2, Some("c".into()))
         ]
     );
+    assert_eq!(c.class_of(2), Some("c"));
+    assert_eq!(c.class_of(-1), None);
     assert_eq!(c.counts[0], vec![3, 0, 2, 0]); // a: 3 right, 2 called c
     assert!((c.accuracy - 0.8).abs() < 1e-12);
     assert!((c.rates[0][0] - 0.6).abs() < 1e-12);
