@@ -43,6 +43,40 @@ pub(crate) fn check_iterations(max_iterations: usize) -> Result<()> {
     Ok(())
 }
 
+/// The most runs a `restarts` may ask for (k-means runs, or trial splits
+/// per node of hierarchical k-means++): each run is a full k-means, so more
+/// would take hours on a large set and, above, would be a slip of the hand
+/// (scikit-learn's `n_init` was 10 before 1.4; the page offers 10).
+pub const MAX_RESTARTS: usize = 1000;
+
+/// What a `restarts` field left out means: one run, as before restarts.
+pub(crate) fn one_run() -> usize {
+    1
+}
+
+/// Reject 0 runs and more than [`MAX_RESTARTS`]; `what` names the runs in
+/// the message ("runs of k-means").
+pub(crate) fn check_runs(restarts: usize, what: &str) -> Result<()> {
+    if restarts == 0 {
+        return invalid(format!(
+            "restarts must be at least 1 (1: a single run), got 0 {what}"
+        ));
+    }
+    if restarts > MAX_RESTARTS {
+        return invalid(format!(
+            "restarts = {restarts} is more than the limit of {MAX_RESTARTS} {what}"
+        ));
+    }
+    Ok(())
+}
+
+/// True if a run of cost `run` should replace the kept run of cost `kept`:
+/// strictly cheaper (of equal costs the earliest run stays), and a NaN cost
+/// is never kept over a number nor keeps a later number out.
+pub(crate) fn cheaper(run: f64, kept: f64) -> bool {
+    !run.is_nan() && (kept.is_nan() || run < kept)
+}
+
 /// Reject k = 0 (a check of the parameters alone).
 pub(crate) fn check_k_positive(k: usize) -> Result<()> {
     if k == 0 {

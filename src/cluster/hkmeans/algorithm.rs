@@ -1,6 +1,6 @@
 use super::hyperparams::HkMeansValidParams;
 use super::tree::{Tree, TreeNode};
-use crate::cluster::lloyd::fit_subset;
+use crate::cluster::lloyd::{cheaper, fit_subset};
 use crate::cluster::ParamGuard;
 use crate::cluster::Seeding;
 use crate::distance::DistanceMatrix;
@@ -141,14 +141,7 @@ fn build(
         if members.len() < 2 || height == 0.0 {
             continue; // a leaf: one scan, or scans Delta cannot tell apart
         }
-        let (labels, ..) = fit_subset(
-            space,
-            &members,
-            2,
-            Seeding::PlusPlus,
-            params.max_iterations,
-            r,
-        );
+        let labels = cheapest_split(space, &members, params, r);
         let (mut left, mut right) = split(&members, |p, _| labels[p] == 0);
         if left.is_empty() || right.is_empty() {
             // 2-means could not split (e.g. ties): split around the two
@@ -167,4 +160,33 @@ fn build(
         stack.push((right, Some((id, 1))));
         stack.push((left, Some((id, 0))));
     }
+}
+
+/// The 2-means++ labels of `members` of lowest cost among `params.restarts`
+/// trials drawn one after another from `r` (the earliest of equal costs).
+/// One trial is the paper's split.
+fn cheapest_split(
+    space: &Space,
+    members: &[usize],
+    params: &HkMeansValidParams,
+    r: &mut ChaCha8Rng,
+) -> Vec<usize> {
+    let trial = |r: &mut ChaCha8Rng| {
+        fit_subset(
+            space,
+            members,
+            2,
+            Seeding::PlusPlus,
+            params.max_iterations,
+            r,
+        )
+    };
+    let (mut labels, _, _, _, mut cost) = trial(r);
+    for _ in 1..params.restarts {
+        let (other, _, _, _, other_cost) = trial(r);
+        if cheaper(other_cost, cost) {
+            (labels, cost) = (other, other_cost);
+        }
+    }
+    labels
 }

@@ -1,4 +1,4 @@
-use crate::cluster::lloyd::check_iterations;
+use crate::cluster::lloyd::{check_iterations, check_runs, one_run};
 use crate::cluster::{setters, validated, ParamGuard};
 use crate::error::Result;
 use serde::{Deserialize, Serialize};
@@ -12,6 +12,17 @@ pub struct HkMeansParams {
     pub seed: u64,
     /// Iteration cap of each 2-means split (at least 1).
     pub max_iterations: usize,
+    /// Trial 2-means++ runs at every split, the one of lowest cost kept
+    /// (the sum over the node's scans of Delta to their centre, as
+    /// [`KMeansResult::cost`](crate::cluster::KMeansResult::cost)): the
+    /// bisecting k-means of Steinbach, Karypis and Kumar (2000), which
+    /// tries ITER splits of a cluster and keeps the best. 1 (the default,
+    /// and what parameters written without this field read as) is the
+    /// paper's single run, the same tree as before the field existed; at
+    /// most [`MAX_RESTARTS`](crate::cluster::MAX_RESTARTS). The trials draw
+    /// one after another from the tree's one RNG.
+    #[serde(default = "one_run")]
+    pub restarts: usize,
 }
 
 /// Hierarchical k-means++ parameters that passed [`ParamGuard::check`]; a
@@ -27,12 +38,13 @@ impl Default for HkMeansParams {
         HkMeansParams {
             seed: 0,
             max_iterations: 100,
+            restarts: one_run(),
         }
     }
 }
 
 impl HkMeansParams {
-    /// Seed `seed`, at most 100 iterations per split.
+    /// Seed `seed`, at most 100 iterations per split, one run per split.
     pub fn new(seed: u64) -> Self {
         HkMeansParams {
             seed,
@@ -45,6 +57,7 @@ impl ParamGuard for HkMeansParams {
     type Checked = HkMeansValidParams;
     fn check(&self) -> Result<HkMeansValidParams> {
         check_iterations(self.max_iterations)?;
+        check_runs(self.restarts, "2-means runs per split")?;
         Ok(HkMeansValidParams(self.clone()))
     }
 }
@@ -52,4 +65,6 @@ impl ParamGuard for HkMeansParams {
 setters!(HkMeansParams {
     /// Set the iteration cap of each split.
     max_iterations: usize,
+    /// Set the trial runs per split (the cheapest is kept).
+    restarts: usize,
 });

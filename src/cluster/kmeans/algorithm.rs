@@ -1,5 +1,5 @@
 use super::hyperparams::KMeansValidParams;
-use crate::cluster::lloyd::fit_subset;
+use crate::cluster::lloyd::{cheaper, fit_subset};
 use crate::cluster::ParamGuard;
 use crate::distance::Space;
 use crate::error::Result;
@@ -98,13 +98,6 @@ impl KMeans {
             restart,
         }
     }
-}
-
-/// True if a run of cost `run` should replace the kept run of cost `kept`:
-/// strictly cheaper (of equal costs the earliest run stays), and a NaN cost
-/// is never kept over a number nor keeps a later number out.
-fn cheaper(run: f64, kept: f64) -> bool {
-    !run.is_nan() && (kept.is_nan() || run < kept)
 }
 
 #[cfg(test)]

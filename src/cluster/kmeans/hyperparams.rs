@@ -1,4 +1,4 @@
-use crate::cluster::lloyd::{check_iterations, check_k_positive, Seeding};
+use crate::cluster::lloyd::{check_iterations, check_k_positive, check_runs, one_run, Seeding};
 use crate::cluster::{setters, validated, ParamGuard};
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
@@ -20,7 +20,7 @@ pub struct KMeansParams {
     /// compared: the sum of (unsquared) Delta to the centres, the paper's
     /// metric, not the squared-distance inertia (Arthur and Vassilvitskii
     /// 2007 recommend restarting k-means++). At least 1, at most
-    /// [`MAX_RESTARTS`]; 1 (the default, and
+    /// [`MAX_RESTARTS`](crate::cluster::MAX_RESTARTS); 1 (the default, and
     /// what parameters written without this field read as) is the paper's
     /// single run. Run r draws from stream r of the RNG seeded with `seed`
     /// ([`crate::rng::rng_stream`]), so run 0 is the single run. More than
@@ -28,11 +28,6 @@ pub struct KMeansParams {
     /// clustering every time.
     #[serde(default = "one_run")]
     pub restarts: usize,
-}
-
-/// What a `restarts` field left out means: one run, as before restarts.
-fn one_run() -> usize {
-    1
 }
 
 /// k-means parameters that passed [`ParamGuard::check`]; a deserialised one
@@ -67,22 +62,10 @@ impl KMeansParams {
     }
 }
 
-/// The most runs `restarts` may ask for: each run is a full k-means, so
-/// more would take hours on a large set and, above, would be a slip of the
-/// hand (scikit-learn's `n_init` was 10 before 1.4; the page offers 10).
-pub const MAX_RESTARTS: usize = 1000;
-
-/// Reject 0 runs, more than [`MAX_RESTARTS`], and restarts of a seeding that draws nothing (every run
+/// Reject 0 runs, more than [`MAX_RESTARTS`](crate::cluster::MAX_RESTARTS), and restarts of a seeding that draws nothing (every run
 /// would be the first again).
 fn check_restarts(restarts: usize, seeding: Seeding) -> Result<()> {
-    if restarts == 0 {
-        return invalid("restarts must be at least 1 (1: a single run of k-means), got 0");
-    }
-    if restarts > MAX_RESTARTS {
-        return invalid(format!(
-            "restarts = {restarts} is more than the limit of {MAX_RESTARTS} runs of k-means"
-        ));
-    }
+    check_runs(restarts, "runs of k-means")?;
     if restarts > 1 && seeding == Seeding::Stride {
         return invalid(format!(
             "restarts = {restarts} with stride (deterministic) seeding: every run would start \

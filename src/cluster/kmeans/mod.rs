@@ -3,6 +3,6 @@
 mod algorithm;
 mod hyperparams;
 
-pub use crate::cluster::lloyd::Seeding;
+pub use crate::cluster::lloyd::{Seeding, MAX_RESTARTS};
 pub use algorithm::{KMeans, KMeansResult};
-pub use hyperparams::{KMeansParams, KMeansValidParams, MAX_RESTARTS};
+pub use hyperparams::{KMeansParams, KMeansValidParams};
