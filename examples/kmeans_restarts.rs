@@ -17,10 +17,7 @@
 
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
-use placecat::eval::evaluate;
-use placecat::sim::Simulation;
 use placecat::*;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
@@ -28,28 +25,18 @@ use std::path::Path;
 #[path = "common/families.rs"]
 mod families;
 use families::*;
-
-type Res<T> = Result<T, Box<dyn std::error::Error>>;
+#[path = "common/rounds.rs"]
+mod rounds;
+use rounds::*;
 
 /// Fixed in docs/seeds.md ("issue 18, fourth round") before any run.
 const DEV_SEEDS: &[u64] = &[1, 2, 3, 4, 5, 6];
 const TEST_SEEDS: &[u64] = &[331, 332, 333, 334, 335];
 /// k-means runs a clustering keeps the cheapest of (scikit-learn's n_init).
 const RESTARTS: usize = 10;
-/// Clustering seeds 0-9 of every randomised method.
-const CLUSTER_SEEDS: u64 = 10;
 const DEV_FILE: &str = "descriptors-dev-4.json";
 const REPORT_FILE: &str = "descriptors-4.json";
 const MD_FILE: &str = "descriptors-4.md";
-
-/// Accuracy and ARI of one method on one set: the mean over clustering
-/// seeds and the lowest accuracy (stride: one run, all three equal).
-#[derive(Serialize, Deserialize, Clone, Copy, Default)]
-struct Method {
-    accuracy: f64,
-    lowest: f64,
-    ari: f64,
-}
 
 #[derive(Serialize, Deserialize, Clone, Copy, Default)]
 struct Figures {
@@ -82,27 +69,10 @@ struct Report {
     test_seconds: f64,
 }
 
-fn over_seeds(truth: &[String], mut labels: impl FnMut(u64) -> Res<Vec<i32>>) -> Res<Method> {
-    let mut m = Method {
-        lowest: f64::INFINITY,
-        ..Method::default()
-    };
-    for seed in 0..CLUSTER_SEEDS {
-        let e = evaluate(truth, &labels(seed)?)?;
-        m.accuracy += e.accuracy / CLUSTER_SEEDS as f64;
-        m.ari += e.ari / CLUSTER_SEEDS as f64;
-        m.lowest = m.lowest.min(e.accuracy);
-    }
-    Ok(m)
-}
-
 fn measure(ds: &[Descriptor], p: &DescriptorParams, truth: &[String], k: usize) -> Res<Figures> {
     let space = Space::new(ds, DistanceOptions::from(p))?;
     let m = space.matrix();
-    let stride = evaluate(
-        truth,
-        &KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?.labels,
-    )?;
+    let stride = KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?.labels;
     let kmeans = |restarts: usize| {
         over_seeds(truth, |s| {
             let params = KMeansParams::new(k).seed(s).restarts(restarts);
@@ -110,11 +80,7 @@ fn measure(ds: &[Descriptor], p: &DescriptorParams, truth: &[String], k: usize) 
         })
     };
     Ok(Figures {
-        stride: Method {
-            accuracy: stride.accuracy,
-            lowest: stride.accuracy,
-            ari: stride.ari,
-        },
+        stride: once(truth, &stride)?,
         hk: over_seeds(truth, |s| {
             let tree = HierarchicalKMeans::fit(&space, &m, &HkMeansParams::new(s))?;
             Ok(tree.cut_k(k)?.labels)
@@ -125,131 +91,37 @@ fn measure(ds: &[Descriptor], p: &DescriptorParams, truth: &[String], k: usize) 
 }
 
 fn run_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<SetResult> {
-    let sim = Simulation::new(&sim_params(f, sensor, seed)?)?;
-    let params: Vec<DescriptorParams> = presets
-        .iter()
-        .map(|p| DescriptorParams::preset(p))
-        .collect::<placecat::Result<_>>()?;
-    // Each scan has its own RNG stream, so describing in parallel changes
-    // no figure.
-    let per_scan: Vec<Vec<placecat::Result<Descriptor>>> = (0..sim.len())
-        .into_par_iter()
-        .map(|i| {
-            let points = sim.scan(i).points;
-            params.iter().map(|p| describe(&points, p)).collect()
-        })
-        .collect();
-    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
-    let mut kinds = truth.clone();
-    kinds.sort();
-    kinds.dedup();
+    let set = describe_set(f, sensor, seed, presets)?;
     let mut out = vec![];
-    for (j, p) in params.iter().enumerate() {
-        let ds: placecat::Result<Vec<Descriptor>> = per_scan
-            .iter()
-            .map(|s| {
-                s[j].as_ref()
-                    .cloned()
-                    .map_err(|e| Error::InvalidParameter(e.to_string()))
-            })
-            .collect();
-        if let Ok(ds) = ds {
-            out.push((presets[j].clone(), measure(&ds, p, &truth, kinds.len())?));
-        }
+    for (name, p, ds) in &set.presets {
+        out.push((name.clone(), measure(ds, p, &set.truth, set.kinds)?));
     }
     Ok(SetResult {
         family: f.name.into(),
         sensor: sensor.name(),
         seed,
-        scans: sim.len(),
+        scans: set.scans,
         presets: out,
     })
 }
 
-/// Each family's paper preset, then the new presets rounds 2 and 3 chose.
-fn presets_of(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
-    #[derive(Deserialize)]
-    struct Choice {
-        family: String,
-        paper: String,
-        best_new: Option<String>,
-    }
-    #[derive(Deserialize)]
-    struct Round {
-        choices: Vec<Choice>,
-    }
-    let mut out: Vec<(String, Vec<String>)> = vec![];
-    for file in ["descriptors-2.json", "descriptors-3.json"] {
-        let path = docs.join(file);
-        let text =
-            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-        let round: Round =
-            serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-        for c in round.choices {
-            let i = match out.iter().position(|o| o.0 == c.family) {
-                Some(i) => i,
-                None => {
-                    out.push((c.family.clone(), vec![c.paper.clone()]));
-                    out.len() - 1
-                }
-            };
-            if let Some(new) = c.best_new {
-                if !out[i].1.contains(&new) {
-                    out[i].1.push(new);
-                }
-            }
-        }
-    }
-    Ok(out)
+fn run(presets: &[(String, Vec<String>)], seeds: &[u64], what: &str) -> Res<(Vec<SetResult>, f64)> {
+    every_set(presets, seeds, what, run_set)
 }
 
-fn run(presets: &[(String, Vec<String>)], seeds: &[u64], what: &str) -> Res<(Vec<SetResult>, f64)> {
-    let t0 = std::time::Instant::now();
-    let mut sets = vec![];
-    for f in families() {
-        let chosen = presets
-            .iter()
-            .find(|p| p.0 == f.name)
-            .ok_or_else(|| format!("no presets chosen for family {:?}", f.name))?;
-        if chosen.1.first().map(String::as_str) != Some(f.paper) {
-            return Err(format!(
-                "{}: rounds 2-3 name another paper preset than {}",
-                f.name, f.paper
-            )
-            .into());
-        }
-        for sensor in std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()) {
-            for &seed in seeds {
-                eprintln!(
-                    "{what} {} {} seed {seed} ({:.0} s)",
-                    f.name,
-                    sensor.name(),
-                    t0.elapsed().as_secs_f64()
-                );
-                sets.push(run_set(&f, sensor, seed, &chosen.1)?);
-            }
-        }
-    }
-    Ok((sets, t0.elapsed().as_secs_f64()))
+/// A figure of `preset` in a set, if it described the set.
+fn of(s: &SetResult, preset: &str, f: &impl Fn(&Figures) -> f64) -> Option<f64> {
+    s.presets.iter().find(|p| p.0 == preset).map(|p| f(&p.1))
 }
 
 /// Mean over `sets` of a figure of `preset`; NaN unless it described them all.
 fn mean(sets: &[&SetResult], preset: &str, f: impl Fn(&Figures) -> f64) -> f64 {
-    let v: Vec<f64> = sets
-        .iter()
-        .filter_map(|s| s.presets.iter().find(|p| p.0 == preset).map(|p| f(&p.1)))
-        .collect();
-    if v.is_empty() || v.len() < sets.len() {
-        return f64::NAN;
-    }
-    v.iter().sum::<f64>() / v.len() as f64
+    mean_over(sets, |s| of(s, preset, &f))
 }
 
 /// The lowest accuracy over `sets` of any clustering seed's run.
 fn lowest(sets: &[&SetResult], preset: &str, f: impl Fn(&Figures) -> f64) -> f64 {
-    sets.iter()
-        .filter_map(|s| s.presets.iter().find(|p| p.0 == preset).map(|p| f(&p.1)))
-        .fold(f64::NAN, f64::min)
+    lowest_over(sets, |s| of(s, preset, &f))
 }
 
 fn target(family: &str) -> &'static str {

@@ -34,6 +34,17 @@ import { choiceReason, rangeShare, siteSubsample, suggestPreset } from './sugges
 /** @typedef {{free(): void}} Freeable */
 
 /** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
+/**
+ * A count of runs for the wasm side's `u32`: refused here unless a whole number from 1, because
+ * `>>> 0` would turn -1 into 4294967295, 2.5 into 2 and NaN into 0.
+ * @param {number} restarts
+ */
+function checkRuns(restarts) {
+  if (!Number.isInteger(restarts) || restarts < 1 || restarts > 0xffffffff) {
+    throw new RangeError(`restarts must be a whole number of runs from 1, got ${restarts}`);
+  }
+}
+
 export class Slot {
   /** @type {T | null} */
   value = null;
@@ -118,10 +129,16 @@ export class Engine {
     return { size: set.length, usesMatrix: set.usesMatrix, matrixLimit: set.matrixLimit };
   }
 
-  /** Hierarchical k-means++; the tree is kept for cuts. @param {number} seed @returns {TreeData} */
-  hkmeans(seed) {
+  /**
+   * Hierarchical k-means++; the tree is kept for cuts. `restarts`: 2-means++ trials at
+   * every split, the cheapest kept (1: the paper's tree; the wasm side refuses more than 1000).
+   * @param {number} seed @param {number} [restarts] @returns {TreeData}
+   * @throws {RangeError} unless `restarts` is a whole number from 1 to 2^32 - 1
+   */
+  hkmeans(seed, restarts = 1) {
+    checkRuns(restarts);
     this.tree.clear();
-    this.tree.set(this.set.get('scans').hkmeans(seed >>> 0));
+    this.tree.set(this.set.get('scans').hkmeans(seed >>> 0, restarts));
     const tree = this.tree.get('tree');
     return { nodes: tree.nodes(), rootHeight: tree.rootHeight() };
   }
@@ -146,14 +163,15 @@ export class Engine {
    * Dispersions the set refuses (too few, another set's) count as none: the
    * set computes its own, as when the workers failed.
    * @param {Float64Array | null} [dispersions] @param {number} [seed] the tree seed they were drawn for
+   * @param {number} [restarts] the trials per split they were drawn for
    * @returns {{k: number, why: string}}
    */
-  suggestCategories(dispersions, seed = 0) {
+  suggestCategories(dispersions, seed = 0, restarts = 1) {
     const set = this.set.get('scans');
     const tree = this.tree.get('tree');
     let choice = null;
     try {
-      if (dispersions) choice = set.chooseCategoriesWith(tree, dispersions, seed);
+      if (dispersions) choice = set.chooseCategoriesWith(tree, dispersions, seed, restarts);
     } catch {
       // refused: chosen below from the set's own reference sets
     }
@@ -185,13 +203,10 @@ export class Engine {
    * the wasm side refuses more than its limit, 1000).
    * @param {number} k @param {Seeding} seeding @param {number} seed @param {number} [restarts]
    * @returns {Int32Array}
-   * @throws {RangeError} unless `restarts` is a whole number from 1 to 2^32 - 1 (`>>> 0`
-   *   would turn -1 into 4294967295, 2.5 into 2 and NaN into 0).
+   * @throws {RangeError} unless `restarts` is a whole number from 1 to 2^32 - 1
    */
   kmeans(k, seeding, seed, restarts = 1) {
-    if (!Number.isInteger(restarts) || restarts < 1 || restarts > 0xffffffff) {
-      throw new RangeError(`restarts must be a whole number of runs from 1, got ${restarts}`);
-    }
+    checkRuns(restarts);
     return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0, restarts).labels);
   }
 
@@ -324,12 +339,14 @@ export class Describer {
 
   /**
    * The reference sets `which` of the choice of categories for a tree of
-   * `seed`, in a set of these descriptors: this worker's share of the choice.
+   * `seed` and `restarts`, in a set of these descriptors: this worker's share of the choice.
    * @param {string} key @param {Params} params @param {string[]} descriptorJsons @param {number} seed @param {number[]} which
+   * @param {number} [restarts]
    * @returns {Float64Array}
    */
-  referenceDispersions(key, params, descriptorJsons, seed, which) {
-    return this.#keepTail(this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which)));
+  referenceDispersions(key, params, descriptorJsons, seed, which, restarts = 1) {
+    checkRuns(restarts);
+    return this.#keepTail(this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which), restarts));
   }
 
   /**

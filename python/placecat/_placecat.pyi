@@ -142,7 +142,9 @@ class Collection:
         restarts, restart: the cheapest of `restarts` k-means runs (1: the
         paper's single run; at most 1000)."""
     def kmedoids(self, k: int, seed: int = 0) -> Dict[str, Any]: ...
-    def hkmeans(self, seed: int = 0) -> Tree: ...
+    def hkmeans(self, seed: int = 0, restarts: int = 1) -> Tree:
+        """The whole tree; `restarts` 2-means++ trials at every split, the
+        cheapest kept (1: the paper's tree; at most 1000)."""
     def choose_categories(
         self, tree: Optional[Tree] = None, seeding: str = "plusplus", seed: int = 0
     ) -> Dict[str, Any]:

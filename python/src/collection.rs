@@ -211,14 +211,15 @@ impl PyCollection {
     }
 
     /// Hierarchical k-means++: the whole tree (built without the n x n
-    /// matrix above MATRIX_LIMIT scans), to cut anywhere.
-    #[pyo3(signature = (seed=0))]
-    fn hkmeans(&mut self, py: Python<'_>, seed: u64) -> PyResult<PyTree> {
+    /// matrix above MATRIX_LIMIT scans), to cut anywhere. `restarts`:
+    /// 2-means++ trials at every split, the cheapest kept (1: the paper's
+    /// tree; at most 1000).
+    #[pyo3(signature = (seed=0, restarts=1))]
+    fn hkmeans(&mut self, py: Python<'_>, seed: u64, restarts: usize) -> PyResult<PyTree> {
         let inner = &mut self.inner;
-        let tree = py
-            .detach(|| inner.hkmeans(&HkMeansParams::new(seed)))
-            .map_err(core_err)?;
-        Ok(PyTree { tree, seed })
+        let params = HkMeansParams::new(seed).restarts(restarts);
+        let tree = py.detach(|| inner.hkmeans(&params)).map_err(core_err)?;
+        Ok(PyTree { tree, params })
     }
 
     /// How many categories the scans hold, by the CLI's default rule: for
@@ -234,7 +235,9 @@ impl PyCollection {
     ) -> PyResult<Bound<'py, PyAny>> {
         let seeding: Seeding = seeding.parse().map_err(core_err)?;
         let km = KMeansParams::new(1).seeding(seeding).seed(seed);
-        let hk = HkMeansParams::new(tree.as_ref().map_or(seed, |t| t.seed));
+        let hk = tree
+            .as_ref()
+            .map_or_else(|| HkMeansParams::new(seed), |t| t.params.clone());
         let tree = tree.as_ref().map(|t| &t.tree);
         let inner = &mut self.inner;
         let choice = py
@@ -342,7 +345,9 @@ fn add(inner: &mut Collection, name: String, d: &PyDescriptor) -> PyResult<usize
 #[pyclass(module = "placecat", name = "Tree", frozen)]
 pub struct PyTree {
     tree: Tree,
-    seed: u64,
+    /// What it was built with: the choice of categories builds its
+    /// reference trees alike.
+    params: HkMeansParams,
 }
 
 fn cut_dict<'py>(py: Python<'py>, cut: Cut) -> PyResult<Bound<'py, PyDict>> {

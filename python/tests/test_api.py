@@ -78,6 +78,8 @@ def test_bad_parameters_raise(room):
         (lambda: c.kmeans(2, restarts=0), "restarts must be at least 1"),
         (lambda: c.kmeans(2, restarts=2**40), "restarts = 1099511627776 is more than the limit of 1000"),
         (lambda: c.hkmeans().cut(-1.0), "threshold must be"),
+        (lambda: c.hkmeans(restarts=0), "restarts must be at least 1"),
+        (lambda: c.hkmeans(restarts=1001), "more than the limit of 1000 2-means runs per split"),
         (lambda: c.dbscan(-0.5, 2), "invalid parameter"),
         (lambda: c.delta(0, 5), "index out of range"),
         (lambda: c.build_model([0], {0: "a"}), "mismatch: 1 labels for 2"),

@@ -92,6 +92,16 @@ def test_default_choice_and_evaluation_equal_the_cli(described, parity_files, pa
     cut = tree.cut_k(choice["k"])
     assert cut["labels"].tolist() == cli["labels"]
     np.testing.assert_allclose(tree.linkage(), cli["tree"]["linkage"], atol=1e-6)
+    # Trial splits: the tree and the rule's reference trees alike, as
+    # `--method hkmeans --restarts 10`.
+    run_cli("cluster", tmp_path / "d.json", "--method", "hkmeans", "--restarts", "10", "-o", tmp_path / "c10.json")
+    cli10 = json.loads((tmp_path / "c10.json").read_text())
+    tree10 = c.hkmeans(restarts=10)
+    choice10 = c.choose_categories(tree10)
+    assert cli10["restarts"] == 10 and choice10["k"] == cli10["categories"]
+    np.testing.assert_allclose([s for _, s in choice10["scores"]], [s for _, s in cli10["choice"]["scores"]], atol=1e-9)
+    assert tree10.cut_k(choice10["k"])["labels"].tolist() == cli10["labels"]
+    np.testing.assert_allclose(tree10.linkage(), cli10["tree"]["linkage"], atol=1e-6)
     # k-means with K auto, as `--method kmeans` with no --k.
     run_cli("cluster", tmp_path / "d.json", "--method", "kmeans", "-o", tmp_path / "k.json")
     km_cli = json.loads((tmp_path / "k.json").read_text())

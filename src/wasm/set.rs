@@ -133,9 +133,10 @@ impl DescriptorSet {
     /// Hierarchical k-means++: the whole tree, to cut at any threshold.
     /// Above `matrixLimit` scans it runs without the n x n matrix (see
     /// `usesMatrix`): heights of nodes over 1500 scans are then an upper
-    /// bound of the diameter.
-    pub fn hkmeans(&mut self, seed: u32) -> WasmResult<ClusterTree> {
-        let params = tree_params(seed);
+    /// bound of the diameter. `restarts`: 2-means++ trials at every split,
+    /// the cheapest kept (default 1, the paper's tree; at most 1000).
+    pub fn hkmeans(&mut self, seed: u32, restarts: Option<u32>) -> WasmResult<ClusterTree> {
+        let params = tree_params(seed, restarts);
         Ok(ClusterTree {
             tree: self.set.hkmeans(&params)?,
             params,
@@ -150,7 +151,8 @@ impl DescriptorSet {
         to_js(&self.set.choose_categories(how, &Default::default())?)
     }
     /// The gap statistic's reference sets `which` (numbers 0 to
-    /// `referenceSets - 1`) of `chooseCategories` for a tree of `seed`: for
+    /// `referenceSets - 1`) of `chooseCategories` for a tree of `seed` (and
+    /// `restarts`, as given to `hkmeans`): for
     /// each, log(W*_K / m) at K = 1 to min(10, length), set after set. The
     /// costly part of the choice, and it needs no tree: workers compute it
     /// in shares while the page builds the tree; `chooseCategoriesWith`
@@ -160,9 +162,10 @@ impl DescriptorSet {
         &mut self,
         seed: u32,
         which: &[u32],
+        restarts: Option<u32>,
     ) -> WasmResult<js_sys::Float64Array> {
         let which: Vec<usize> = which.iter().map(|&b| b as usize).collect();
-        let tree = tree_params(seed);
+        let tree = tree_params(seed, restarts);
         let how = choose_k::Method::Tree(&tree);
         let sets = self.set.reference_log_w(how, &Default::default(), &which)?;
         Ok(js_sys::Float64Array::from(&sets.concat()[..]))
@@ -173,22 +176,26 @@ impl DescriptorSet {
         choose_k::ChooseKParams::default().references
     }
     /// `chooseCategories(tree)` with the `referenceDispersions` of every
-    /// reference set, in order, one after the other (computed with `seed`,
-    /// which must be `tree`'s, by a set of the same descriptors in the same
-    /// order, e.g. in workers): the same choice, bit for bit, without
-    /// computing them here. Dispersions of another seed are an Error: they
-    /// would give another choice than `chooseCategories`.
+    /// reference set, in order, one after the other (computed with `seed`
+    /// and `restarts`, which must be `tree`'s, by a set of the same
+    /// descriptors in the same order, e.g. in workers): the same choice, bit
+    /// for bit, without computing them here. Dispersions of another seed or
+    /// restarts are an Error: they would give another choice than
+    /// `chooseCategories`.
     #[wasm_bindgen(js_name = chooseCategoriesWith, unchecked_return_type = "Choice")]
     pub fn choose_categories_with(
         &mut self,
         tree: &ClusterTree,
         dispersions: &[f64],
         seed: u32,
+        restarts: Option<u32>,
     ) -> WasmResult<JsValue> {
-        if tree_params(seed) != tree.params {
+        let drawn = tree_params(seed, restarts);
+        if drawn != tree.params {
             return Err(Error::Mismatch(format!(
-                "reference sets drawn for a tree of seed {seed}, this tree's is {}",
-                tree.params.seed
+                "reference sets drawn for a tree of seed {seed} and {} restarts, this tree's \
+                 are seed {} and {} restarts",
+                drawn.restarts, tree.params.seed, tree.params.restarts
             ))
             .into());
         }
@@ -253,11 +260,12 @@ impl DescriptorSet {
     }
 }
 
-/// The hierarchical k-means++ parameters of a tree of `seed`: the same for
-/// the page's tree (`hkmeans`) and for the reference sets of its choice
-/// (`referenceDispersions`), which must be built alike.
-fn tree_params(seed: u32) -> HkMeansParams {
-    HkMeansParams::new(seed.into())
+/// The hierarchical k-means++ parameters of a tree of `seed` and
+/// `restarts` (1 unless given): the same for the page's tree (`hkmeans`)
+/// and for the reference sets of its choice (`referenceDispersions`), which
+/// must be built alike. Checked where the tree is built.
+fn tree_params(seed: u32, restarts: Option<u32>) -> HkMeansParams {
+    HkMeansParams::new(seed.into()).restarts(restarts.map_or(1, |r| r as usize))
 }
 
 /// The k-means parameters of `kmeans` and `chooseK` (restarts: 1 unless given).

@@ -332,6 +332,31 @@ fn simulate_describe_cluster_evaluate_round_trip() {
     );
     assert_eq!(hk["categories"], 5);
     assert_eq!(hk["tree"]["linkage"].as_array().unwrap().len(), 14);
+    assert_eq!(hk["restarts"], 1, "one 2-means run per split unless asked");
+    // Ten trial splits per node: another tree than seed 1's single runs
+    // (measured: its lowest merge joins scans 10 and 11, not 9 and 11).
+    let hk10 = run(
+        &[
+            "--method",
+            "hkmeans",
+            "--categories",
+            "5",
+            "--seed",
+            "1",
+            "--restarts",
+            "10",
+        ],
+        "hk10.json",
+    );
+    assert_eq!(hk10["restarts"], 10);
+    let first_pair = |v: &serde_json::Value| {
+        let row = &v["tree"]["linkage"][0];
+        (row[0].as_f64().unwrap(), row[1].as_f64().unwrap())
+    };
+    assert_eq!(
+        (first_pair(&hk), first_pair(&hk10)),
+        ((9.0, 11.0), (10.0, 11.0))
+    );
     let t = hk["threshold"].as_f64().unwrap();
     let hk2 = run(
         &[
@@ -406,8 +431,21 @@ fn simulate_describe_cluster_evaluate_round_trip() {
             "restarts = 18446744073709551615 is more than the limit of 1000",
         ),
         (
-            &["--method", "hkmeans", "--restarts", "3"][..],
-            "--restarts is for --method kmeans",
+            &[
+                "--method",
+                "dbscan",
+                "--eps",
+                "0.5",
+                "--min-points",
+                "2",
+                "--restarts",
+                "3",
+            ][..],
+            "--restarts is for --method kmeans or hkmeans, not dbscan",
+        ),
+        (
+            &["--method", "hkmeans", "--restarts", "0"][..],
+            "2-means runs per split",
         ),
     ] {
         let e = fails(
@@ -734,6 +772,8 @@ fn auto_categories_follow_the_data() {
         &["--method", "kmeans"],
         // Every K the rule tries is clustered with the restarts too.
         &["--method", "kmeans", "--k", "auto", "--restarts", "10"],
+        // The rule's reference trees are built with the trial splits too.
+        &["--method", "hkmeans", "--restarts", "10"],
     ] {
         let v = cluster(&one_place, args);
         assert_eq!(v["categories"], 1, "{args:?}: {v}");

@@ -140,7 +140,10 @@ mod trial_splits {
         let (space, _) = set();
         for seed in 0..5 {
             let plain = HierarchicalKMeans::fit(&space, &space.matrix(), &HkMeansParams::new(seed));
-            assert_eq!(plain.unwrap().cut_k(5).unwrap(), tree(&space, seed, 1).cut_k(5).unwrap());
+            assert_eq!(
+                plain.unwrap().cut_k(5).unwrap(),
+                tree(&space, seed, 1).cut_k(5).unwrap()
+            );
         }
         // Parameters written before the field existed read as one trial.
         let old: HkMeansValidParams =
@@ -197,11 +200,16 @@ mod trial_splits {
         let (space, _) = set();
         let err = |r: usize| {
             let p = HkMeansParams::new(0).restarts(r);
-            HierarchicalKMeans::fit(&space, &space.matrix(), &p).unwrap_err().to_string()
+            HierarchicalKMeans::fit(&space, &space.matrix(), &p)
+                .unwrap_err()
+                .to_string()
         };
         assert!(err(0).contains("restarts must be at least 1"), "{}", err(0));
         let e = err(MAX_RESTARTS + 1);
-        assert!(e.contains("restarts = 1001 is more than the limit of 1000 2-means runs per split"), "{e}");
+        assert!(
+            e.contains("restarts = 1001 is more than the limit of 1000 2-means runs per split"),
+            "{e}"
+        );
         assert!(HkMeansParams::new(0).restarts(MAX_RESTARTS).check().is_ok());
     }
 }

@@ -77,7 +77,7 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     let labels = labels_of(&km);
     assert_eq!(labels[0], labels[1]);
     assert_eq!(labels[3], labels[4]);
-    let tree = set.hkmeans(2).unwrap();
+    let tree = set.hkmeans(2, None).unwrap();
     let linkage = tree.linkage().to_vec();
     assert_eq!(linkage.len(), 5 * 4);
     let cut = tree.cut_k(3).unwrap();
@@ -93,11 +93,11 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     assert_eq!(set.reference_sets(), 10);
     let (even, odd) = (
         other
-            .reference_dispersions(2, &[0, 2, 4, 6, 8])
+            .reference_dispersions(2, &[0, 2, 4, 6, 8], None)
             .unwrap()
             .to_vec(),
         other
-            .reference_dispersions(2, &[1, 3, 5, 7, 9])
+            .reference_dispersions(2, &[1, 3, 5, 7, 9], None)
             .unwrap()
             .to_vec(),
     );
@@ -105,22 +105,42 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     let all: Vec<f64> = (0..10)
         .flat_map(|b| [&even, &odd][b % 2][b / 2 * 6..b / 2 * 6 + 6].to_vec())
         .collect();
-    let with = set.choose_categories_with(&tree, &all, 2).unwrap();
+    let with = set.choose_categories_with(&tree, &all, 2, None).unwrap();
     let own = set.choose_categories(&tree).unwrap();
     assert_eq!(
         js_sys::JSON::stringify(&with).unwrap(),
         js_sys::JSON::stringify(&own).unwrap()
     );
     let e = message(
-        set.choose_categories_with(&tree, &all[6..], 2)
+        set.choose_categories_with(&tree, &all[6..], 2, None)
             .err()
             .unwrap(),
     );
     assert!(e.contains("9 reference sets"), "{e}");
     // Drawn for a tree of another seed: refused, not another choice.
-    let e = message(set.choose_categories_with(&tree, &all, 3).err().unwrap());
-    assert!(e.contains("seed 3, this tree's is 2"), "{e}");
-    let e = message(other.reference_dispersions(2, &[10]).err().unwrap());
+    let e = message(
+        set.choose_categories_with(&tree, &all, 3, None)
+            .err()
+            .unwrap(),
+    );
+    assert!(
+        e.contains("seed 3 and 1 restarts, this tree's are seed 2"),
+        "{e}"
+    );
+    // Or for a tree of other trial splits (a tree of 10 trials a split).
+    let trials = set.hkmeans(2, Some(10)).unwrap();
+    let e = message(
+        set.choose_categories_with(&trials, &all, 2, None)
+            .err()
+            .unwrap(),
+    );
+    assert!(
+        e.contains("and 1 restarts, this tree's are seed 2 and 10 restarts"),
+        "{e}"
+    );
+    let e = message(set.hkmeans(2, Some(0)).err().unwrap());
+    assert!(e.contains("restarts must be at least 1"), "{e}");
+    let e = message(other.reference_dispersions(2, &[10], None).err().unwrap());
     assert!(e.contains("reference set 10 asked for, of 10"), "{e}");
 }
 

@@ -32,7 +32,8 @@ pub struct ClusterArgs {
     /// kmeans: runs of k-means, each from its own seeding, keeping the one
     /// of lowest cost (1: the paper's single run; more needs random or
     /// plusplus seeding; at most 1000). With --k auto every k tried is
-    /// clustered so.
+    /// clustered so. hkmeans: 2-means++ trials at every split of the tree,
+    /// the cheapest kept (1: the paper's tree; at most 1000).
     #[arg(long, default_value_t = 1)]
     pub restarts: usize,
     /// Seeds k-means, k-medoids, the tree's 2-means splits and the choice
@@ -135,9 +136,9 @@ pub fn cluster(
             descriptors.display()
         )));
     }
-    if a.restarts != 1 && a.method != "kmeans" {
+    if a.restarts != 1 && !matches!(a.method.as_str(), "kmeans" | "hkmeans") {
         return Err(Error::InvalidParameter(format!(
-            "--restarts is for --method kmeans, not {}",
+            "--restarts is for --method kmeans or hkmeans, not {}",
             a.method
         )));
     }
@@ -190,7 +191,7 @@ pub fn cluster(
         }
         "hkmeans" => {
             // Above the matrix limit the tree is built without the matrix.
-            let hk = HkMeansParams::new(a.seed);
+            let hk = HkMeansParams::new(a.seed).restarts(a.restarts);
             let tree = set.hkmeans(&hk)?;
             let cut = match (a.threshold, a.categories) {
                 (Some(t), None) => tree.cut(t)?,
@@ -212,6 +213,7 @@ pub fn cluster(
             out["threshold"] = json!(cut.threshold);
             out["categories"] = json!(cut.nodes.len());
             out["seed"] = json!(a.seed);
+            out["restarts"] = json!(a.restarts);
             out["tree"] = json!({
                 "nodes": tree.nodes.iter().map(|n| json!({"members": n.members, "height": n.height, "children": n.children})).collect::<Vec<Value>>(),
                 "linkage": tree.linkage(),

@@ -1,0 +1,193 @@
+//! What issue 18's clustering rounds share (round 4, `kmeans_restarts.rs`:
+//! k-means++ restarts; round 5, `split_trials.rs`: trial splits of
+//! hierarchical k-means++): the presets the earlier rounds chose, each set
+//! described once per preset, and a method's figures over clustering seeds.
+//! Include after `families.rs` (`#[path] mod families;` then this).
+
+use crate::families::{sim_params, Family, Sensor};
+use placecat::eval::evaluate;
+use placecat::sim::Simulation;
+use placecat::*;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+pub type Res<T> = Result<T, Box<dyn std::error::Error>>;
+
+/// Clustering seeds 0-9 of every randomised method.
+pub const CLUSTER_SEEDS: u64 = 10;
+
+/// Accuracy and ARI of one method on one set: the mean over clustering
+/// seeds and the lowest accuracy (a deterministic method: one run, all
+/// three from it).
+#[derive(Serialize, Deserialize, Clone, Copy, Default)]
+pub struct Method {
+    pub accuracy: f64,
+    pub lowest: f64,
+    pub ari: f64,
+}
+
+/// `labels(seed)` for clustering seeds 0-9, scored against `truth`.
+pub fn over_seeds(truth: &[String], mut labels: impl FnMut(u64) -> Res<Vec<i32>>) -> Res<Method> {
+    let mut m = Method {
+        lowest: f64::INFINITY,
+        ..Method::default()
+    };
+    for seed in 0..CLUSTER_SEEDS {
+        let e = evaluate(truth, &labels(seed)?)?;
+        m.accuracy += e.accuracy / CLUSTER_SEEDS as f64;
+        m.ari += e.ari / CLUSTER_SEEDS as f64;
+        m.lowest = m.lowest.min(e.accuracy);
+    }
+    Ok(m)
+}
+
+/// One deterministic clustering, as a [`Method`].
+pub fn once(truth: &[String], labels: &[i32]) -> Res<Method> {
+    let e = evaluate(truth, labels)?;
+    Ok(Method {
+        accuracy: e.accuracy,
+        lowest: e.accuracy,
+        ari: e.ari,
+    })
+}
+
+/// A simulated set described with each preset that could describe every
+/// scan (the `outdoor` preset finds nothing to describe indoors).
+pub struct DescribedSet {
+    pub truth: Vec<String>,
+    /// The number of true kinds (the k every method is given).
+    pub kinds: usize,
+    pub scans: usize,
+    pub presets: Vec<(String, DescriptorParams, Vec<Descriptor>)>,
+}
+
+pub fn describe_set(
+    f: &Family,
+    sensor: Sensor,
+    seed: u64,
+    presets: &[String],
+) -> Res<DescribedSet> {
+    let sim = Simulation::new(&sim_params(f, sensor, seed)?)?;
+    let params: Vec<DescriptorParams> = presets
+        .iter()
+        .map(|p| DescriptorParams::preset(p))
+        .collect::<placecat::Result<_>>()?;
+    // Each scan has its own RNG stream, so describing in parallel changes
+    // no figure.
+    let per_scan: Vec<Vec<placecat::Result<Descriptor>>> = (0..sim.len())
+        .into_par_iter()
+        .map(|i| {
+            let points = sim.scan(i).points;
+            params.iter().map(|p| describe(&points, p)).collect()
+        })
+        .collect();
+    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
+    let mut kinds = truth.clone();
+    kinds.sort();
+    kinds.dedup();
+    let mut described = vec![];
+    for (j, p) in params.into_iter().enumerate() {
+        let ds: Option<Vec<Descriptor>> = per_scan
+            .iter()
+            .map(|s| s[j].as_ref().ok().cloned())
+            .collect();
+        if let Some(ds) = ds {
+            described.push((presets[j].clone(), p, ds));
+        }
+    }
+    Ok(DescribedSet {
+        truth,
+        kinds: kinds.len(),
+        scans: sim.len(),
+        presets: described,
+    })
+}
+
+/// Each family's paper preset, then the new presets rounds 2 and 3 chose.
+pub fn presets_of(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
+    #[derive(Deserialize)]
+    struct Choice {
+        family: String,
+        paper: String,
+        best_new: Option<String>,
+    }
+    #[derive(Deserialize)]
+    struct Round {
+        choices: Vec<Choice>,
+    }
+    let mut out: Vec<(String, Vec<String>)> = vec![];
+    for file in ["descriptors-2.json", "descriptors-3.json"] {
+        let round: Round = crate::families::read_json(&docs.join(file))?;
+        for c in round.choices {
+            let i = match out.iter().position(|o| o.0 == c.family) {
+                Some(i) => i,
+                None => {
+                    out.push((c.family.clone(), vec![c.paper.clone()]));
+                    out.len() - 1
+                }
+            };
+            if let Some(new) = c.best_new {
+                if !out[i].1.contains(&new) {
+                    out[i].1.push(new);
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// `each(family, sensor, seed, presets)` for every family, its own sensor
+/// then its others, and every seed, in that order; the results and the
+/// seconds taken.
+pub fn every_set<T>(
+    presets: &[(String, Vec<String>)],
+    seeds: &[u64],
+    what: &str,
+    mut each: impl FnMut(&Family, Sensor, u64, &[String]) -> Res<T>,
+) -> Res<(Vec<T>, f64)> {
+    let t0 = std::time::Instant::now();
+    let mut sets = vec![];
+    for f in crate::families::families() {
+        let chosen = presets
+            .iter()
+            .find(|p| p.0 == f.name)
+            .ok_or_else(|| format!("no presets chosen for family {:?}", f.name))?;
+        if chosen.1.first().map(String::as_str) != Some(f.paper) {
+            return Err(format!(
+                "{}: rounds 2-3 name another paper preset than {}",
+                f.name, f.paper
+            )
+            .into());
+        }
+        for sensor in std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()) {
+            for &seed in seeds {
+                eprintln!(
+                    "{what} {} {} seed {seed} ({:.0} s)",
+                    f.name,
+                    sensor.name(),
+                    t0.elapsed().as_secs_f64()
+                );
+                sets.push(each(&f, sensor, seed, &chosen.1)?);
+            }
+        }
+    }
+    Ok((sets, t0.elapsed().as_secs_f64()))
+}
+
+/// The mean of `figure` over `sets`; NaN unless every set has it (a
+/// preset that could not describe one of them).
+pub fn mean_over<S>(sets: &[&S], figure: impl Fn(&S) -> Option<f64>) -> f64 {
+    let v: Vec<f64> = sets.iter().filter_map(|s| figure(s)).collect();
+    if v.is_empty() || v.len() < sets.len() {
+        return f64::NAN;
+    }
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+/// The lowest of `figure` over `sets` (NaN if none has it).
+pub fn lowest_over<S>(sets: &[&S], figure: impl Fn(&S) -> Option<f64>) -> f64 {
+    sets.iter()
+        .filter_map(|s| figure(s))
+        .fold(f64::NAN, f64::min)
+}
