@@ -32,8 +32,8 @@ let state = S.initialState();
 let tailOf = null;
 /**
  * The reference sets of the choice of categories that the workers compute
- * for a set (state.set) and a tree seed (matrix.js); null where they failed.
- * @type {{set: State['set'], seed: number, dispersions: Promise<Float64Array | null>} | null}
+ * for a set (state.set) and a tree seed and trials a split (matrix.js); null where they failed.
+ * @type {{set: State['set'], seed: number, restarts: number, dispersions: Promise<Float64Array | null>} | null}
  */
 let references = null;
 /**
@@ -275,10 +275,11 @@ async function tailFromWorkers(current) {
   const tasks = [];
   const tracked = { size: pool.size, run: (/** @type {any} */ task) => { const p = pool.run(task); tasks.push(p); return p; } };
   const matrix = state.set.usesMatrix ? matrixInWorkers(tracked, params, jsons, key) : null;
+  const restarts = S.treeRestarts(m.hkSplits, state.scans.length);
   const dispersions = m.method === 'hkmeans' && 'auto' in S.nextCut(state)
-    ? referencesInWorkers(tracked, params, jsons, { seed: m.hkSeed, sets: engine.referenceSets() }, key).catch(() => null)
+    ? referencesInWorkers(tracked, params, jsons, { seed: m.hkSeed, restarts, sets: engine.referenceSets() }, key).catch(() => null)
     : null;
-  if (dispersions) references = { set: state.set, seed: m.hkSeed, dispersions };
+  if (dispersions) references = { set: state.set, seed: m.hkSeed, restarts, dispersions };
   if (!matrix && !dispersions) return;
   tailOf = run;
   Promise.allSettled(tasks).then(() => tailOf === run && (tailOf = null));
@@ -292,10 +293,13 @@ async function tailFromWorkers(current) {
   if (current()) stageSince('matrix', start); // not into a newer run's measures
 }
 
-/** The reference sets' dispersions the workers compute for this set's tree of `seed`, if any. @param {number} seed */
-function workersDispersions(seed) {
+/**
+ * The reference sets' dispersions the workers compute for this set's tree of `seed` and `restarts`, if any.
+ * @param {number} seed @param {number} restarts
+ */
+function workersDispersions(seed, restarts) {
   const r = references;
-  return r && r.set === state.set && r.seed === seed ? r.dispersions : null;
+  return r && r.set === state.set && r.seed === seed && r.restarts === restarts ? r.dispersions : null;
 }
 
 /** Cluster the set by the method shown; the first cut of a tree waits for the workers' reference sets, if they compute them. */
@@ -308,17 +312,18 @@ async function cluster() {
   try {
     if (m.method === 'hkmeans') {
       const next = S.nextCut(state);
-      state = S.withTree(state, stage('tree', () => engine.hkmeans(m.hkSeed)));
+      const restarts = S.treeRestarts(m.hkSplits, state.scans.length);
+      state = S.withTree(state, stage('tree', () => engine.hkmeans(m.hkSeed, restarts)));
       const asked = askedCut;
       askedCut = null;
       if (asked) cutTree(asked.how, asked.by);
       if (!('auto' in next)) return asked ? undefined : cutTree(next);
       const start = performance.now();
       const tree = state.tree;
-      const pending = workersDispersions(m.hkSeed);
+      const pending = workersDispersions(m.hkSeed, restarts);
       const dispersions = pending && (await pending);
       if (state.tree !== tree) return; // clustered again meanwhile
-      state = S.withFirstCut(state, engine.suggestCategories(dispersions, m.hkSeed));
+      state = S.withFirstCut(state, engine.suggestCategories(dispersions, m.hkSeed, restarts));
       stageSince('choose', start); // with the wait for the workers
       // The user cut the tree meanwhile (or before it existed): their cut stays; the choice is only recorded.
       if (state.cut) return render();
@@ -422,7 +427,7 @@ async function main() {
   on('apply-advanced', 'click', () => state.inputs.length && describeAll());
   onThinning(() => state.inputs.some((i) => i.bag) && describeAll({ ...state, inputs: rethinned(state.inputs) }));
   on('method', 'change', () => { view.showMethod(); cluster(); });
-  for (const id of ['hk-seed', 'k', 'seeding', 'km-seed', 'eps', 'minpts']) on(id, 'change', cluster);
+  for (const id of ['hk-seed', 'hk-splits', 'k', 'seeding', 'km-seed', 'eps', 'minpts']) on(id, 'change', cluster);
   on('threshold', 'change', () => cutTree({ threshold: Math.max(0, Number($('threshold').value) || 0) }, 'threshold'));
   on('categories', 'change', () => cutTree({ k: Number($('categories').value) }, 'categories'));
   on('sweep', 'click', runSweep);

@@ -26,14 +26,13 @@ import { choiceReason, rangeShare, siteSubsample, suggestPreset } from './sugges
  * @typedef {{name: string, format: string, descriptorJson: string, summary: Summary,
  *   preview: Float32Array, site?: Float32Array, label?: string, pose?: Pose, far?: number, preset?: 'indoor' | 'outdoor'}} ScanResult
  */
-/** A tree as plain data: its nodes (node 0 is the root) and the root's height.
- * @typedef {{nodes: TreeNode[], rootHeight: number}} TreeData */
+/** A tree as plain data: its nodes (node 0 is the root), the root's height, its 2-means++ trials a split.
+ * @typedef {{nodes: TreeNode[], rootHeight: number, restarts: number}} TreeData */
 /** A cut: each scan's category, the tree node of each category, the threshold.
  * @typedef {{labels: Int32Array, nodes: number[], threshold: number}} CutData */
 
 /** @typedef {{free(): void}} Freeable */
 
-/** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
 /**
  * A count of runs for the wasm side's `u32`: refused here unless a whole number from 1, because
  * `>>> 0` would turn -1 into 4294967295, 2.5 into 2 and NaN into 0.
@@ -45,6 +44,7 @@ function checkRuns(restarts) {
   }
 }
 
+/** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
 export class Slot {
   /** @type {T | null} */
   value = null;
@@ -140,7 +140,7 @@ export class Engine {
     this.tree.clear();
     this.tree.set(this.set.get('scans').hkmeans(seed >>> 0, restarts));
     const tree = this.tree.get('tree');
-    return { nodes: tree.nodes(), rootHeight: tree.rootHeight() };
+    return { nodes: tree.nodes(), rootHeight: tree.rootHeight(), restarts };
   }
 
   /** The kept tree cut at a threshold. @param {number} threshold @returns {CutData} */

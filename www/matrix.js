@@ -55,16 +55,16 @@ export async function matrixInWorkers(pool, params, descriptorJsons, key = tailK
 
 /**
  * Every reference set's dispersions (DescriptorSet.referenceDispersions),
- * in order, for a tree of `seed`: what Engine.suggestCategories takes. One
+ * in order, for a tree of `seed` and `restarts`: what Engine.suggestCategories takes. One
  * task a set, each held alone (oneAtATime), so that a worker slowed by the
  * page's tree (or by anything else on the machine) takes fewer of them.
  * @param {Pick<import('./pool.js').WorkerPool, 'size' | 'run'>} pool @param {import('./engine.js').Params} params
- * @param {string[]} descriptorJsons @param {{seed: number, sets: number}} choice the tree's seed and how many reference
- *   sets the choice draws (Engine.referenceSets) @param {string} [key] the tail's (tailKey)
+ * @param {string[]} descriptorJsons @param {{seed: number, restarts: number, sets: number}} choice the tree's seed and
+ *   trials a split, and how many reference sets the choice draws (Engine.referenceSets) @param {string} [key] the tail's (tailKey)
  * @returns {Promise<Float64Array>}
  */
-export async function referencesInWorkers(pool, params, descriptorJsons, { seed, sets }, key = tailKey()) {
-  const values = await Promise.all(Array.from({ length: sets }, (_, b) => pool.run({ type: 'references', key, params, descriptorJsons, seed, which: [b] })));
+export async function referencesInWorkers(pool, params, descriptorJsons, { seed, restarts, sets }, key = tailKey()) {
+  const values = await Promise.all(Array.from({ length: sets }, (_, b) => pool.run({ type: 'references', key, params, descriptorJsons, seed, restarts, which: [b] })));
   const all = new Float64Array(values.reduce((n, v) => n + v.length, 0));
   values.reduce((at, v) => (all.set(v, at), at + v.length), 0);
   return all;

@@ -21,7 +21,7 @@ import { siteSubsample } from './suggest.js';
 /** A category: its label, member scans (indices) and most central member.
  * @typedef {{label: number, members: number[], medoid: number}} Category */
 /** How to cluster (the form's values).
- * @typedef {{method: 'hkmeans' | 'kmeans' | 'dbscan', hkSeed: number, k: number,
+ * @typedef {{method: 'hkmeans' | 'kmeans' | 'dbscan', hkSeed: number, hkSplits: 'auto' | number, k: number,
  *   seeding: import('./engine.js').Seeding, restarts: number, kmSeed: number, eps: number,
  *   minPoints: number}} Method */
 
@@ -190,6 +190,24 @@ export function withPoses(s, poses) {
 /** A new descriptor set: no clustering yet. @param {State} s @param {State['set']} set @returns {State} */
 export function withSet(s, set) {
   return { ...s, set, tree: null, cut: null, labels: null, categories: [], cutBy: undefined, lastCut: null, firstCut: null };
+}
+
+/**
+ * The page's tree takes the cheapest of 10 2-means++ trials a split (issues
+ * 14 and 18, fifth round: better trees on the development seeds) for sets of
+ * up to this many scans; above, one run a split, the paper's, because ten
+ * cost ten times the tree and its reference trees (1000 scans: 0.8 s
+ * instead of 0.09 s for the tree, in Node's wasm; docs/seeds.md).
+ */
+export const TRIAL_SPLITS_UP_TO = 500;
+
+/**
+ * 2-means++ runs a split of the tree for `n` scans under the form's "Splits".
+ * @param {'auto' | number} splits @param {number} n @returns {number}
+ */
+export function treeRestarts(splits, n) {
+  if (splits !== 'auto') return splits;
+  return n <= TRIAL_SPLITS_UP_TO ? 10 : 1;
 }
 
 /** A new tree (hierarchical k-means), not yet cut. @param {State} s @param {TreeData} tree @returns {State} */

@@ -80,7 +80,9 @@ export class View {
     const path = s.set && !s.set.usesMatrix ? ` (centre-based path: more than ${s.set.matrixLimit} scans, no Delta matrix)` : '';
     const few = n === 1 ? 'One scan is one category: load more scans to compare places. '
       : n === 2 && delta !== undefined ? `Two scans, Delta ${delta.toFixed(3)} between them: one category if they show one kind of place, two if not. ` : '';
-    this.status(`${few}${s.categories.length} ${s.categories.length === 1 ? 'category' : 'categories'}${noise ? `, ${noise} noise` : ''} from ${n} ${n === 1 ? 'scan' : 'scans'}${path}`);
+    const splits = !s.tree || s.tree.restarts === undefined ? ''
+      : s.tree.restarts === 1 ? '; tree: one 2-means++ run a split (the paper\'s)' : `; tree: the cheapest of ${s.tree.restarts} 2-means++ trials a split`;
+    this.status(`${few}${s.categories.length} ${s.categories.length === 1 ? 'category' : 'categories'}${noise ? `, ${noise} noise` : ''} from ${n} ${n === 1 ? 'scan' : 'scans'}${path}${splits}`);
     $('cluster-status').dataset.categories = String(s.categories.length);
   }
 
@@ -165,6 +167,7 @@ export class View {
     return {
       method: /** @type {Method['method']} */ ($('method').value),
       hkSeed: Number($('hk-seed').value),
+      hkSplits: $('hk-splits').value === 'auto' ? 'auto' : Number($('hk-splits').value),
       k: Number($('k').value),
       seeding: /** @type {Method['seeding']} */ ($('seeding').value),
       // "k-means++, best of 10" is plusplus seeding with 10 restarts.

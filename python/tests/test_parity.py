@@ -102,6 +102,8 @@ def test_default_choice_and_evaluation_equal_the_cli(described, parity_files, pa
     np.testing.assert_allclose([s for _, s in choice10["scores"]], [s for _, s in cli10["choice"]["scores"]], atol=1e-9)
     assert tree10.cut_k(choice10["k"])["labels"].tolist() == cli10["labels"]
     np.testing.assert_allclose(tree10.linkage(), cli10["tree"]["linkage"], atol=1e-6)
+    # And the trials reached the tree: on these 16 scans it is another tree.
+    assert tree10.linkage().shape == tree.linkage().shape and not np.allclose(tree10.linkage(), tree.linkage())
     # k-means with K auto, as `--method kmeans` with no --k.
     run_cli("cluster", tmp_path / "d.json", "--method", "kmeans", "-o", tmp_path / "k.json")
     km_cli = json.loads((tmp_path / "k.json").read_text())

@@ -53,7 +53,7 @@ test('the outdoor demo, no click but its button: a site of 300 scans, the catego
   // hierarchical k-means++ seed 0), and the page says it was the rule's.
   assert.equal(await categories(), 3);
   assert.match(await text('#cut-note'), /^3 categories: the gap statistic's choice \(best mean silhouette 0\.\d\d\)$/);
-  assert.match(await text('#cluster-status'), /^3 categories from 300 scans$/);
+  assert.match(await text('#cluster-status'), /^3 categories from 300 scans; tree: the cheapest of 10 2-means\+\+ trials a split$/);
   assert.equal(await h.page.$$eval('#legend li', (li) => li.length), 3);
   // The choice's 10 reference sets were computed by the two workers
   // (matrix.js), one task a set, after each worker's rows of the matrix.
@@ -62,20 +62,35 @@ test('the outdoor demo, no click but its button: a site of 300 scans, the catego
   assert.deepEqual(tail.filter((c) => c.startsWith('deltaRows')).sort(), ['deltaRows 0', 'deltaRows 1']);
   assert.equal(tail.filter((c) => c.startsWith('references')).length, 10);
   assert.ok(tail.includes('references 0') && tail.includes('references 1'), tail.join(', '));
-  // Accuracy at these three categories. Issue 14 asks for at least 97 %;
-  // not met by 1 scan of 300: the page shows 96.7 % (ARI 0.906), the CLI's
-  // figure for what the page does (`placecat cluster --method hkmeans
-  // --categories auto --seed 0` on `simulate --scene outdoor --seed 1`,
-  // described with `outdoor`; before the third round's site, 96.3 % on
-  // both; the fourth round's site, its corridor kept clear, gives the same
-  // 96.7 %, ARI 0.906). docs/experiments.md section 4 gives stride k-means and the mean
-  // over tree seeds 0-9 on the same seed. The errors are scans within about
-  // 14 m of a change of place (the road junction, the field's edge). The
-  // floors are a little below the measured figure, to catch a regression.
+  // Accuracy at these three categories. Issue 14 asks for at least 97 %.
+  // The page's tree takes the cheapest of 10 2-means++ trials a split for
+  // sets of up to 500 scans (the fifth round, docs/split-trials.md): 97.0 %,
+  // ARI 0.915, 291 of 300 scans, on every tree seed 0-9 (the CLI's figure
+  // for what the page does: `placecat cluster --method hkmeans --categories
+  // auto --seed 0 --restarts 10` on `simulate --scene outdoor --seed 1`,
+  // described with `outdoor`). Seed 1 is a development seed: this is a
+  // demonstration; the test seeds' figures are in docs/split-trials.md.
+  // The errors are scans near a change of place (docs/experiments.md
+  // section 4).
   const ev = await evaluation();
   t.diagnostic(`outdoor demo at 3 categories: accuracy ${ev.accuracy}, ARI ${ev.ari}; ${await text('#progress-text')}`);
-  assert.ok(ev.accuracy >= 0.965, `accuracy ${ev.accuracy} at 3 categories`);
-  assert.ok(ev.ari >= 0.9, `ARI ${ev.ari}`);
+  assert.ok(ev.accuracy >= 0.97, `accuracy ${ev.accuracy} at 3 categories`);
+  assert.ok(ev.ari >= 0.91, `ARI ${ev.ari}`);
+  // The paper's tree, one 2-means++ run a split, picked under "Splits":
+  // 96.7 %, ARI 0.906 (tree seed 0; one scan short of 97 %), then back.
+  const splits = async (value, shown) => {
+    await h.page.selectOption('#hk-splits', value);
+    await h.page.waitForFunction((s) => document.querySelector('#cluster-status')?.textContent?.endsWith(s), shown);
+  };
+  try {
+    await splits('1', "tree: one 2-means++ run a split (the paper's)");
+    const paper = await evaluation();
+    assert.deepEqual([Math.round(paper.accuracy * 1000), await categories()], [967, 3]);
+    assert.ok(paper.ari >= 0.9 && paper.ari < ev.ari, `ARI ${paper.ari}`);
+  } finally {
+    await splits('auto', 'tree: the cheapest of 10 2-means++ trials a split');
+  }
+  assert.deepEqual(await evaluation(), ev, 'back to the page\'s default');
   // The map is a site, not a line: the scans' points spread both ways (the
   // old strip's would be about 60 m across 350 m: a ratio near 0.17).
   const site = await siteOnMap();
@@ -109,7 +124,7 @@ test('ten scans of one place are one category, not five', async () => {
   await load(ouster);
   assert.match(await text('#progress-text'), /^10 \/ 10 scans/);
   assert.equal(await categories(), 1);
-  assert.match(await text('#cluster-status'), /^1 category from 10 scans$/);
+  assert.match(await text('#cluster-status'), /^1 category from 10 scans; tree: the cheapest of 10 2-means\+\+ trials a split$/);
   // The rule's reason: no K from 2 on reaches a mean silhouette of 0.5.
   assert.match(await text('#cut-note'), /^1 category: the scans are alike under this descriptor, no grouping stands out \(best mean silhouette 0\.[0-4]\d, under 0\.5\)$/);
   await h.page.screenshot({ path: join(ARTIFACTS, 'one-place.png') });

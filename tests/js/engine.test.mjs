@@ -277,7 +277,7 @@ test('the choice\'s reference sets from the workers\' shares (matrix.js) give th
       const d = workers[w];
       const before = d.set.value;
       tasks.push([w, t.type, t.type === 'references' ? t.which : t.rows.length]);
-      const r = t.type === 'references' ? d.referenceDispersions(t.key, t.params, t.descriptorJsons, t.seed, t.which) : d.deltaRows(t.key, t.params, t.descriptorJsons, t.rows);
+      const r = t.type === 'references' ? d.referenceDispersions(t.key, t.params, t.descriptorJsons, t.seed, t.which, t.restarts) : d.deltaRows(t.key, t.params, t.descriptorJsons, t.rows);
       if (d.set.value !== before) built[w]++;
       return r;
     },
@@ -287,7 +287,7 @@ test('the choice\'s reference sets from the workers\' shares (matrix.js) give th
   assert.equal(e.referenceSets(), 10);
   const key = tailKey();
   const matrix = matrixInWorkers(pool, params, jsons, key);
-  const dispersions = await referencesInWorkers(pool, params, jsons, { seed: 0, sets: e.referenceSets() }, key);
+  const dispersions = await referencesInWorkers(pool, params, jsons, { seed: 0, restarts: 1, sets: e.referenceSets() }, key);
   await matrix;
   // Rows first, then one task a reference set, in order; one set built per worker for all its tasks.
   assert.deepEqual(tasks.slice(0, 4), [[0, 'deltaRows', 14], [1, 'deltaRows', 13], [2, 'deltaRows', 13], [0, 'references', [0]]]);
@@ -313,9 +313,18 @@ test('the choice\'s reference sets from the workers\' shares (matrix.js) give th
   assert.throws(() => e.set.get('scans').chooseCategoriesWith(e.tree.get('tree'), dispersions.subarray(10), 0), /9 reference sets .*10 of 10/);
   assert.deepEqual(e.suggestCategories(dispersions.subarray(10)), e.suggestCategories());
   assert.equal(e.suggestCategories(dispersions.subarray(10)).k, 3);
-  // Another tail's key builds the set again (its two tasks come to workers 1 and 2, in turn).
-  await referencesInWorkers(pool, params, jsons.slice(0, 20), { seed: 0, sets: 2 }, tailKey());
-  assert.deepEqual(built, [1, 2, 2]);
+  // A tree of ten trials a split: the workers' reference trees are built alike (the set takes
+  // them as its own), and those of one run a split are refused for it.
+  const trials = await referencesInWorkers(pool, params, jsons, { seed: 0, restarts: 10, sets: e.referenceSets() }, key);
+  assert.notDeepEqual(trials, dispersions);
+  e.hkmeans(0, 10);
+  const set = e.set.get('scans');
+  assert.deepEqual(set.chooseCategoriesWith(e.tree.get('tree'), trials, 0, 10), set.chooseCategories(e.tree.get('tree')));
+  assert.throws(() => set.chooseCategoriesWith(e.tree.get('tree'), dispersions, 0), /0 and 1 restarts, this tree's are seed 0 and 10 restarts/);
+  assert.deepEqual(built, [1, 1, 1], 'the same tail: no set built again');
+  // Another tail's key builds the set again (its two tasks come to workers 2 and 0, in turn).
+  await referencesInWorkers(pool, params, jsons.slice(0, 20), { seed: 0, restarts: 1, sets: 2 }, tailKey());
+  assert.deepEqual(built, [2, 1, 2]);
   for (const d of workers) d.dispose();
   e.dispose();
 });

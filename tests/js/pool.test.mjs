@@ -208,7 +208,7 @@ test('a run\'s tail (matrix.js): each worker gets its rows of the matrix first, 
   const jsons = ['a', 'b', 'c', 'd', 'e'];
   const key = tailKey();
   const matrix = matrixInWorkers(p, /** @type {any} */ ({}), jsons, key);
-  const dispersions = referencesInWorkers(p, /** @type {any} */ ({}), jsons, { seed: 0, sets: 10 }, key);
+  const dispersions = referencesInWorkers(p, /** @type {any} */ ({}), jsons, { seed: 0, restarts: 1, sets: 10 }, key);
   const [w0, w1] = FakeWorker.all;
   const held = (w) => w.posted.filter((m) => !m.answered).map((m) => m.task.type === 'references' ? m.task.which[0] : `rows ${m.task.rows}`);
   // Answer a worker's oldest task as worker.js would: the share's Delta values, or set b's two values [b, b + 0.5].

@@ -217,3 +217,9 @@ test('the dendrogram takes the user\'s scale, else the tree\'s default', () => {
   assert.equal(Math.round(d?.auto.ratio ?? 0), 533);
   assert.equal(S.dendrogramOf(S.withScale(s, 'linear'))?.scale, 'linear');
 });
+
+test('the tree\'s splits: auto is ten trials a split up to 500 scans and the paper\'s one run above; a choice stands', () => {
+  assert.equal(S.TRIAL_SPLITS_UP_TO, 500);
+  assert.deepEqual([1, 2, 300, 500, 501, 1000].map((n) => S.treeRestarts('auto', n)), [10, 10, 10, 10, 1, 1]);
+  assert.deepEqual([S.treeRestarts(1, 300), S.treeRestarts(10, 1000)], [1, 10]);
+});
