@@ -159,9 +159,9 @@ export class Engine {
    * the data (issue 14 item 3: the core's choose_k, `silhouette_gap` by
    * default; one category when the scans are alike under the descriptor), and why.
    * `dispersions`: every reference set's, computed by the workers for this
-   * set and the tree's seed (matrix.js); the same choice, not computed here.
-   * Dispersions the set refuses (too few, another set's) count as none: the
-   * set computes its own, as when the workers failed.
+   * set and the tree's seed and restarts (matrix.js); the same choice, not computed here.
+   * Dispersions the set refuses (too few, another set's, another seed's or restarts') count
+   * as none: the set computes its own, as when the workers failed.
    * @param {Float64Array | null} [dispersions] @param {number} [seed] the tree seed they were drawn for
    * @param {number} [restarts] the trials per split they were drawn for
    * @returns {{k: number, why: string}}

@@ -196,8 +196,8 @@ export function withSet(s, set) {
  * The page's tree takes the cheapest of 10 2-means++ trials a split (issues
  * 14 and 18, fifth round: better trees on the development seeds) for sets of
  * up to this many scans; above, one run a split, the paper's, because ten
- * cost ten times the tree and its reference trees (1000 scans: 0.8 s
- * instead of 0.09 s for the tree, in Node's wasm; docs/seeds.md).
+ * cost more (1000 scans, Node's wasm: the tree 0.81 s instead of 0.09 s,
+ * its reference trees 1.5 s instead of 0.5 s; bench/tree_trials.mjs, docs/seeds.md).
  */
 export const TRIAL_SPLITS_UP_TO = 500;
 

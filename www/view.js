@@ -80,7 +80,8 @@ export class View {
     const path = s.set && !s.set.usesMatrix ? ` (centre-based path: more than ${s.set.matrixLimit} scans, no Delta matrix)` : '';
     const few = n === 1 ? 'One scan is one category: load more scans to compare places. '
       : n === 2 && delta !== undefined ? `Two scans, Delta ${delta.toFixed(3)} between them: one category if they show one kind of place, two if not. ` : '';
-    const splits = !s.tree || s.tree.restarts === undefined ? ''
+    // Which tree the categories come from (none after k-means or DBSCAN).
+    const splits = !s.tree ? ''
       : s.tree.restarts === 1 ? '; tree: one 2-means++ run a split (the paper\'s)' : `; tree: the cheapest of ${s.tree.restarts} 2-means++ trials a split`;
     this.status(`${few}${s.categories.length} ${s.categories.length === 1 ? 'category' : 'categories'}${noise ? `, ${noise} noise` : ''} from ${n} ${n === 1 ? 'scan' : 'scans'}${path}${splits}`);
     $('cluster-status').dataset.categories = String(s.categories.length);

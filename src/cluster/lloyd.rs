@@ -59,7 +59,7 @@ pub(crate) fn one_run() -> usize {
 pub(crate) fn check_runs(restarts: usize, what: &str) -> Result<()> {
     if restarts == 0 {
         return invalid(format!(
-            "restarts must be at least 1 (1: a single run), got 0 {what}"
+            "restarts must be at least 1 ({what}; 1: a single run), got 0"
         ));
     }
     if restarts > MAX_RESTARTS {
@@ -203,4 +203,19 @@ pub(crate) fn fit_subset(
         }
     }
     (labels, seed_pos, iterations, converged, cost)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::cheaper;
+
+    #[test]
+    fn a_nan_cost_neither_wins_nor_blocks() {
+        assert!(cheaper(1.0, 2.0));
+        assert!(!cheaper(2.0, 2.0), "the earliest of equals stays");
+        assert!(!cheaper(f64::NAN, 2.0));
+        assert!(cheaper(2.0, f64::NAN), "a later number replaces a NaN run");
+        assert!(cheaper(2.0, -f64::NAN));
+        assert!(!cheaper(-f64::NAN, 2.0));
+    }
 }

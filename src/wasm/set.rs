@@ -193,8 +193,8 @@ impl DescriptorSet {
         let drawn = tree_params(seed, restarts);
         if drawn != tree.params {
             return Err(Error::Mismatch(format!(
-                "reference sets drawn for a tree of seed {seed} and {} restarts, this tree's \
-                 are seed {} and {} restarts",
+                "reference sets drawn for a tree of seed {seed}, restarts {}; this tree's: \
+                 seed {}, restarts {}",
                 drawn.restarts, tree.params.seed, tree.params.restarts
             ))
             .into());

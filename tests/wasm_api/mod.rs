@@ -124,7 +124,7 @@ fn describe_real_bytes_and_cluster_through_the_api() {
             .unwrap(),
     );
     assert!(
-        e.contains("seed 3 and 1 restarts, this tree's are seed 2"),
+        e.contains("seed 3, restarts 1; this tree's: seed 2, restarts 1"),
         "{e}"
     );
     // Or for a tree of other trial splits (a tree of 10 trials a split).
@@ -135,7 +135,7 @@ fn describe_real_bytes_and_cluster_through_the_api() {
             .unwrap(),
     );
     assert!(
-        e.contains("and 1 restarts, this tree's are seed 2 and 10 restarts"),
+        e.contains("seed 2, restarts 1; this tree's: seed 2, restarts 10"),
         "{e}"
     );
     let e = message(set.hkmeans(2, Some(0)).err().unwrap());

@@ -16,7 +16,7 @@ pub struct HkMeansParams {
     /// (the sum over the node's scans of Delta to their centre, as
     /// [`KMeansResult::cost`](crate::cluster::KMeansResult::cost)): the
     /// bisecting k-means of Steinbach, Karypis and Kumar (2000), which
-    /// tries ITER splits of a cluster and keeps the best. 1 (the default,
+    /// tries several splits of a cluster (ITER in the paper) and keeps the best. 1 (the default,
     /// and what parameters written without this field read as) is the
     /// paper's single run, the same tree as before the field existed; at
     /// most [`MAX_RESTARTS`](crate::cluster::MAX_RESTARTS). The trials draw

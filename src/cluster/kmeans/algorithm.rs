@@ -99,18 +99,3 @@ impl KMeans {
         }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::cheaper;
-
-    #[test]
-    fn a_nan_cost_neither_wins_nor_blocks() {
-        assert!(cheaper(1.0, 2.0));
-        assert!(!cheaper(2.0, 2.0), "the earliest of equals stays");
-        assert!(!cheaper(f64::NAN, 2.0));
-        assert!(cheaper(2.0, f64::NAN), "a later number replaces a NaN run");
-        assert!(cheaper(2.0, -f64::NAN));
-        assert!(!cheaper(-f64::NAN, 2.0));
-    }
-}

@@ -33,7 +33,8 @@ pub struct ClusterArgs {
     /// of lowest cost (1: the paper's single run; more needs random or
     /// plusplus seeding; at most 1000). With --k auto every k tried is
     /// clustered so. hkmeans: 2-means++ trials at every split of the tree,
-    /// the cheapest kept (1: the paper's tree; at most 1000).
+    /// the cheapest kept (1: the paper's tree; at most 1000); with
+    /// --categories auto the rule's reference trees are built so too.
     #[arg(long, default_value_t = 1)]
     pub restarts: usize,
     /// Seeds k-means, k-medoids, the tree's 2-means splits and the choice
