@@ -33,6 +33,8 @@ def main() -> int:
     ap.add_argument("--categories", default="auto", help="number of categories, or auto (default)")
     ap.add_argument("--sample", type=int, default=100_000, help="descriptors clustered at most (default 100000)")
     ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--restarts", type=int, default=1,
+                    help="2-means++ trials a split of the tree, or k-means runs; the cheapest kept (default 1: the paper's)")
     ap.add_argument("--describe-only", action="store_true", help="stop after describing")
     a = ap.parse_args()
 
@@ -62,7 +64,7 @@ def main() -> int:
         return 0
     t = time.perf_counter()
     categories = a.categories if a.categories == "auto" else int(a.categories)
-    c = fleet.categorise(a.out, method=a.method, categories=categories, sample=a.sample, seed=a.seed)
+    c = fleet.categorise(a.out, method=a.method, categories=categories, sample=a.sample, seed=a.seed, restarts=a.restarts)
     print(
         f"{c.categories} categories from {c.clustered} scans; {c.scans} scans categorised "
         f"-> {a.out}/categories.parquet, {a.out}/model.json in {time.perf_counter() - t:.1f} s",

@@ -16,7 +16,9 @@ The run is in two stages, each restartable:
    memory does not grow with the number of files.
 2. ``categorise(out)``: hierarchical k-means++ (or k-means) on at most
    ``sample`` descriptors (all of them when there are fewer), the number of
-   categories chosen by the CLI's default rule, a model of those
+   categories chosen by the CLI's default rule (``restarts``: 2-means++
+   trials at every split of the tree, or k-means runs, the cheapest kept;
+   1, the default, is the paper's method), a model of those
    categories (``out/model.json``: the page's "Load model" reads it); then
    every described scan, streamed one part at a time, is put into its
    nearest category by that model, written to ``out/categories.parquet``
@@ -284,6 +286,7 @@ def categorise(
     categories: Union[int, str] = "auto",
     sample: Optional[int] = 100_000,
     seed: int = 0,
+    restarts: int = 1,
 ) -> CategoriseReport:
     """Cluster the described scans under ``out`` (see the module doc):
     writes ``out/model.json`` and ``out/categories.parquet``."""
@@ -295,13 +298,13 @@ def categorise(
         raise placecat.PlacecatError(f"{out}: invalid parameter: no described scans")
     choice: Mapping[str, Any] = {}
     if method == "hkmeans":
-        tree = col.hkmeans(seed=seed)
+        tree = col.hkmeans(seed=seed, restarts=restarts)
         if categories == "auto":
             choice = col.choose_categories(tree, seed=seed)
             categories = choice["k"]
         labels = tree.cut_k(int(categories))["labels"]
     elif method == "kmeans":
-        r = col.kmeans(categories, seed=seed)
+        r = col.kmeans(categories, seed=seed, restarts=restarts)
         labels, choice = r["labels"], r.get("choice", {})
     else:
         raise placecat.PlacecatError(f"invalid parameter: unknown method {method!r} (hkmeans, kmeans)")

@@ -59,6 +59,15 @@ def test_dask_run_gives_the_clis_descriptors_and_skips_the_bad_file(scans, clien
     cats = fleet.read_categories(str(out))
     ev = placecat.evaluate([truth[f] for f, _ in cats], [l for _, l in cats])
     assert ev["accuracy"] > 0.8, ev["accuracy"]
+    # Trial splits reach the tree and its choice, as the CLI's --restarts.
+    cli10 = json.loads(run_cli("cluster", d / "cli.json", "--method", "hkmeans", "--restarts", "10", "-o", "-").stdout)
+    c10 = fleet.categorise(str(out), sample=None, seed=0, restarts=10)
+    assert c10.categories == cli10["categories"]
+    scores = [(k, s) for k, s in c10.choice["scores"]]
+    assert [k for k, _ in scores] == [k for k, _ in cli10["choice"]["scores"]]
+    assert all(abs(s - t) < 1e-9 for (_, s), (_, t) in zip(scores, cli10["choice"]["scores"]))
+    with pytest.raises(placecat.PlacecatError, match="restarts must be at least 1"):
+        fleet.categorise(str(out), sample=None, seed=0, restarts=0)
 
     # Restartable: a rerun describes nothing already described (the bad
     # file is tried again), and a new file only.
