@@ -34,8 +34,8 @@ import { choiceReason, rangeShare, siteSubsample, suggestPreset } from './sugges
 /** @typedef {{free(): void}} Freeable */
 
 /**
- * A count of runs for the wasm side's `u32`: refused here unless a whole number from 1, because
- * `>>> 0` would turn -1 into 4294967295, 2.5 into 2 and NaN into 0.
+ * A count of runs: refused here as a RangeError unless a whole number from 1 (the wasm side
+ * refuses the others too, as an Error; before it did, a `u32` took 2.5 as 2).
  * @param {number} restarts
  */
 function checkRuns(restarts) {

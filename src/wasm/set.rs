@@ -69,8 +69,8 @@ impl DescriptorSet {
     /// k-means: `seeding` is `random`, `stride` or `plusplus`. `restarts`
     /// (optional, default 1: the paper's single run): runs of k-means, the
     /// one of lowest cost kept, the earliest of equals (run r seeded from
-    /// stream r of `seed`), at most 1000; more than 1 needs `random` or
-    /// `plusplus`.
+    /// stream r of `seed`), a whole number up to 1000; more than 1 needs
+    /// `random` or `plusplus`.
     /// Returns `{labels, seeds, iterations, converged, cost, restart}`
     /// (`restart`: the run kept, from 0).
     #[wasm_bindgen(unchecked_return_type = "KMeansResult")]
@@ -79,7 +79,7 @@ impl DescriptorSet {
         k: usize,
         #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
         seed: u32,
-        restarts: Option<u32>,
+        restarts: Option<f64>,
     ) -> WasmResult<JsValue> {
         to_js(
             &self
@@ -134,9 +134,10 @@ impl DescriptorSet {
     /// Above `matrixLimit` scans it runs without the n x n matrix (see
     /// `usesMatrix`): heights of nodes over 1500 scans are then an upper
     /// bound of the diameter. `restarts`: 2-means++ trials at every split,
-    /// the cheapest kept (default 1, the paper's tree; at most 1000).
-    pub fn hkmeans(&mut self, seed: u32, restarts: Option<u32>) -> WasmResult<ClusterTree> {
-        let params = tree_params(seed, restarts);
+    /// the cheapest kept (default 1, the paper's tree; a whole number up to
+    /// 1000).
+    pub fn hkmeans(&mut self, seed: u32, restarts: Option<f64>) -> WasmResult<ClusterTree> {
+        let params = tree_params(seed, restarts)?;
         Ok(ClusterTree {
             tree: self.set.hkmeans(&params)?,
             params,
@@ -162,10 +163,10 @@ impl DescriptorSet {
         &mut self,
         seed: u32,
         which: &[u32],
-        restarts: Option<u32>,
+        restarts: Option<f64>,
     ) -> WasmResult<js_sys::Float64Array> {
         let which: Vec<usize> = which.iter().map(|&b| b as usize).collect();
-        let tree = tree_params(seed, restarts);
+        let tree = tree_params(seed, restarts)?;
         let how = choose_k::Method::Tree(&tree);
         let sets = self.set.reference_log_w(how, &Default::default(), &which)?;
         Ok(js_sys::Float64Array::from(&sets.concat()[..]))
@@ -188,9 +189,9 @@ impl DescriptorSet {
         tree: &ClusterTree,
         dispersions: &[f64],
         seed: u32,
-        restarts: Option<u32>,
+        restarts: Option<f64>,
     ) -> WasmResult<JsValue> {
-        let drawn = tree_params(seed, restarts);
+        let drawn = tree_params(seed, restarts)?;
         if drawn != tree.params {
             return Err(Error::Mismatch(format!(
                 "reference sets drawn for a tree of seed {seed}, restarts {}; this tree's: \
@@ -213,7 +214,7 @@ impl DescriptorSet {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
         seed: u32,
-        restarts: Option<u32>,
+        restarts: Option<f64>,
     ) -> WasmResult<JsValue> {
         let params = kmeans_params(1, seeding, seed, restarts)?;
         let how = choose_k::Clusterer::KMeans(&params);
@@ -263,9 +264,27 @@ impl DescriptorSet {
 /// The hierarchical k-means++ parameters of a tree of `seed` and
 /// `restarts` (1 unless given): the same for the page's tree (`hkmeans`)
 /// and for the reference sets of its choice (`referenceDispersions`), which
-/// must be built alike. Checked where the tree is built.
-fn tree_params(seed: u32, restarts: Option<u32>) -> HkMeansParams {
-    HkMeansParams::new(seed.into()).restarts(restarts.map_or(1, |r| r as usize))
+/// must be built alike. The count's range is checked where the tree is built.
+fn tree_params(seed: u32, restarts: Option<f64>) -> crate::Result<HkMeansParams> {
+    Ok(HkMeansParams::new(seed.into()).restarts(runs(restarts)?))
+}
+
+/// A count of runs from JS: 1 unless given; a whole number, or an Error
+/// (as a `u32` parameter, 2.5 would be taken as 2 and -1 as 4294967295
+/// without a word). Its range (1 to 1000) is the core's check.
+fn runs(restarts: Option<f64>) -> crate::Result<usize> {
+    match restarts {
+        None => Ok(1),
+        Some(r) if r.fract() != 0.0 || r.is_nan() || r < 0.0 => Err(Error::InvalidParameter(
+            format!("restarts must be a whole number of runs, got {r}"),
+        )),
+        // Above any count the core takes (and above usize on wasm32).
+        Some(r) if r > u32::MAX as f64 => Err(Error::InvalidParameter(format!(
+            "restarts = {r} is more than the limit of {} runs",
+            crate::cluster::MAX_RESTARTS
+        ))),
+        Some(r) => Ok(r as usize),
+    }
 }
 
 /// The k-means parameters of `kmeans` and `chooseK` (restarts: 1 unless given).
@@ -273,10 +292,10 @@ fn kmeans_params(
     k: usize,
     seeding: &str,
     seed: u32,
-    restarts: Option<u32>,
+    restarts: Option<f64>,
 ) -> crate::Result<KMeansParams> {
     Ok(KMeansParams::new(k)
         .seeding(seeding.parse::<Seeding>()?)
         .seed(seed.into())
-        .restarts(restarts.map_or(1, |r| r as usize)))
+        .restarts(runs(restarts)?))
 }

@@ -128,7 +128,7 @@ fn describe_real_bytes_and_cluster_through_the_api() {
         "{e}"
     );
     // Or for a tree of other trial splits (a tree of 10 trials a split).
-    let trials = set.hkmeans(2, Some(10)).unwrap();
+    let trials = set.hkmeans(2, Some(10.0)).unwrap();
     let e = message(
         set.choose_categories_with(&trials, &all, 2, None)
             .err()
@@ -138,8 +138,23 @@ fn describe_real_bytes_and_cluster_through_the_api() {
         e.contains("seed 2, restarts 1; this tree's: seed 2, restarts 10"),
         "{e}"
     );
-    let e = message(set.hkmeans(2, Some(0)).err().unwrap());
+    let e = message(set.hkmeans(2, Some(0.0)).err().unwrap());
     assert!(e.contains("restarts must be at least 1"), "{e}");
+    // Not a whole number: refused, not truncated (a u32 would take 2.5 as 2).
+    for bad in [2.5, -1.0, f64::NAN, f64::INFINITY] {
+        let e = message(set.hkmeans(2, Some(bad)).err().unwrap());
+        assert!(
+            e.contains("restarts must be a whole number of runs"),
+            "{bad}: {e}"
+        );
+    }
+    let e = message(set.kmeans(3, "plusplus", 1, Some(2.5)).err().unwrap());
+    assert!(
+        e.contains("restarts must be a whole number of runs, got 2.5"),
+        "{e}"
+    );
+    let e = message(set.hkmeans(2, Some(2f64.powi(40))).err().unwrap());
+    assert!(e.contains("is more than the limit of 1000"), "{e}");
     let e = message(other.reference_dispersions(2, &[10], None).err().unwrap());
     assert!(e.contains("reference set 10 asked for, of 10"), "{e}");
 }
@@ -163,20 +178,24 @@ fn simulated_demo_model_round_trip_and_classify() {
     let km = set.kmeans(5, "plusplus", 1, None).unwrap();
     // Restarts: run 0 is the single run, the cheapest of 10 is kept (and
     // the kept run's index comes back); stride restarts are refused.
-    let one = set.kmeans(5, "plusplus", 1, Some(1)).unwrap();
+    let one = set.kmeans(5, "plusplus", 1, Some(1.0)).unwrap();
     assert_eq!(labels_of(&one), labels_of(&km));
     assert_eq!(get(&one, "restart").as_f64(), Some(0.0));
-    let ten = set.kmeans(5, "plusplus", 1, Some(10)).unwrap();
+    let ten = set.kmeans(5, "plusplus", 1, Some(10.0)).unwrap();
     let cost = |v: &JsValue| get(v, "cost").as_f64().unwrap();
     // Measured (as `placecat cluster --restarts 10` on the same scans):
     // run 9 is kept, cost 0.7291 against the single run's 0.8646.
     assert_eq!(get(&ten, "restart").as_f64(), Some(9.0));
     assert!((cost(&km) - 0.8646).abs() < 1e-4, "{}", cost(&km));
     assert!((cost(&ten) - 0.7291).abs() < 1e-4, "{}", cost(&ten));
-    let e = message(set.kmeans(5, "stride", 1, Some(10)).err().unwrap());
+    let e = message(set.kmeans(5, "stride", 1, Some(10.0)).err().unwrap());
     assert!(e.contains("restarts = 10 with stride"), "{e}");
     // A huge count is an Error, not a trap (it used to run out of memory).
-    let e = message(set.kmeans(5, "plusplus", 1, Some(u32::MAX)).err().unwrap());
+    let e = message(
+        set.kmeans(5, "plusplus", 1, Some(u32::MAX as f64))
+            .err()
+            .unwrap(),
+    );
     assert!(e.contains("is more than the limit of 1000"), "{e}");
     let labels = labels_of(&km);
     let ev = DescriptorSet::evaluate(truth.clone(), &labels).unwrap();
