@@ -2,7 +2,7 @@
 //! classify a new scan (each category's centre in descriptor space), with
 //! the descriptor parameters it was made with. Saved and loaded as JSON.
 
-use crate::descriptor::parts::{cumulative_len, parts_distance};
+use crate::descriptor::parts::cumulative_len;
 use crate::descriptor::{Descriptor, DescriptorParams};
 use crate::distance::{
     check_shape, matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared, Space,
@@ -262,16 +262,13 @@ impl LabelledModel {
         let mut best: Option<Classification> = None;
         for c in &self.categories {
             let centre = pad(&c.centre, self.rows, p.stride);
-            let ndt = p
-                .candidates()
-                .map(|m| matrix_distance(&centre, m, p.stride, self.cols, self.params.metric))
-                .fold(f32::INFINITY, f32::min)
-                * size_factor(c.total, p.total);
-            let dist = if p.parts.is_empty() && p.ndt_weight == 1.0 {
-                ndt
-            } else {
-                p.ndt_weight * ndt + parts_distance(&c.parts, &p.parts)
+            let ndt = || {
+                p.candidates()
+                    .map(|m| matrix_distance(&centre, m, p.stride, self.cols, self.params.metric))
+                    .fold(f32::INFINITY, f32::min)
+                    * size_factor(c.total, p.total)
             };
+            let dist = p.combined(ndt, &c.parts);
             if best.as_ref().is_none_or(|b| dist < b.distance) {
                 best = Some(Classification {
                     name: c.name.clone(),

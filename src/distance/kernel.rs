@@ -3,7 +3,6 @@
 //! centres and by models alike.
 
 use super::Prepared;
-use crate::descriptor::parts::parts_distance;
 use crate::descriptor::Metric;
 
 /// Distance between two normalised column-major matrices (as in
@@ -110,18 +109,10 @@ pub fn size_factor(ta: f32, tb: f32) -> f32 {
 /// unpadded columns). Same values either way.
 ///
 /// With extra parts: `ndt_weight` times that, plus the weighted part
-/// distances ([`parts_distance`]); the NDT histogram is not compared at all
+/// distances ([`crate::descriptor::parts::parts_distance`]); the NDT histogram is not compared at all
 /// when its weight is 0.
 pub fn delta_prepared(a: &Prepared, b: &Prepared, metric: Metric) -> f32 {
-    if a.parts.is_empty() && a.ndt_weight == 1.0 {
-        return ndt_delta(a, b, metric);
-    }
-    let ndt = if a.ndt_weight > 0.0 {
-        a.ndt_weight * ndt_delta(a, b, metric)
-    } else {
-        0.0
-    };
-    ndt + parts_distance(&a.parts, &b.parts)
+    a.combined(|| ndt_delta(a, b, metric), &b.parts)
 }
 
 /// Delta of the NDT histograms alone (paper Eq. 2, 3).

@@ -2,7 +2,7 @@
 //! and padded.
 
 use super::{check_parts, check_shape, DistanceOptions};
-use crate::descriptor::parts::cumulative;
+use crate::descriptor::parts::{cumulative, parts_distance};
 use crate::descriptor::{Descriptor, Normalisation, PartKind};
 use crate::error::Result;
 
@@ -99,6 +99,24 @@ impl Prepared {
             parts,
             part_kinds: d.parts.iter().map(|p| p.kind).collect(),
         })
+    }
+
+    /// The distance of this descriptor to another (a scan's, a centre's or
+    /// a category's) whose NDT Delta `ndt` gives and whose parts are
+    /// `parts`: Delta itself for the paper's descriptor, else `ndt_weight`
+    /// x Delta + [`parts_distance`]. `ndt` is not called when the weight is
+    /// 0. The one place the combined distance is made (pairs, centres and
+    /// a model's categories use it), so the three cannot drift apart.
+    pub(crate) fn combined(&self, ndt: impl FnOnce() -> f32, parts: &[f32]) -> f32 {
+        if self.parts.is_empty() && self.ndt_weight == 1.0 {
+            return ndt();
+        }
+        let weighted = if self.ndt_weight == 0.0 {
+            0.0
+        } else {
+            self.ndt_weight * ndt()
+        };
+        weighted + parts_distance(parts, &self.parts)
     }
 
     /// The candidate orientations' padded matrices (`stride` x `cols`).

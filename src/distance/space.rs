@@ -6,7 +6,6 @@ use super::{
     delta_prepared, matrix_distance, prepare_all, size_factor, DistanceMatrix, DistanceOptions,
     Prepared,
 };
-use crate::descriptor::parts::parts_distance;
 use crate::descriptor::{Descriptor, Metric};
 use crate::error::Result;
 
@@ -74,24 +73,20 @@ impl Space {
     pub fn to_centre(&self, c: &Centre, i: usize) -> (f32, usize) {
         let (stride, cols) = self.shape();
         let item = &self.items[i];
-        let mut best = (f32::INFINITY, 0);
-        if item.ndt_weight == 0.0 {
-            return (parts_distance(&c.parts, &item.parts), 0);
-        }
-        for (k, m) in item.candidates().enumerate() {
-            let d = matrix_distance(&c.matrix, m, stride, cols, self.metric);
-            if d < best.0 {
-                best = (d, k);
+        // The candidate stays 0 when the NDT histogram has weight 0 (not compared).
+        let mut candidate = 0;
+        let ndt = || {
+            let mut best = (f32::INFINITY, 0);
+            for (k, m) in item.candidates().enumerate() {
+                let d = matrix_distance(&c.matrix, m, stride, cols, self.metric);
+                if d < best.0 {
+                    best = (d, k);
+                }
             }
-        }
-        let ndt = best.0 * size_factor(c.total, item.total);
-        if item.parts.is_empty() && item.ndt_weight == 1.0 {
-            return (ndt, best.1);
-        }
-        (
-            item.ndt_weight * ndt + parts_distance(&c.parts, &item.parts),
-            best.1,
-        )
+            candidate = best.1;
+            best.0 * size_factor(c.total, item.total)
+        };
+        (item.combined(ndt, &c.parts), candidate)
     }
 
     /// A centre at item i (its first candidate).

@@ -222,8 +222,8 @@ fn descriptors_and_models_with_parts_round_trip() {
     assert!(e.to_string().contains("part values"), "{e}");
 }
 
-/// The presets with extra parts; `free_space` has NDT weight 0, which
-/// takes its own early return in `Space::to_centre`.
+/// The presets with extra parts; `free_space` has NDT weight 0, so its
+/// NDT histogram is never compared (the combined distance skips it).
 const PARTS_PRESETS: [&str; 5] = [
     "indoor_plus",
     "warehouse",
