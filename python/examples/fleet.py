@@ -37,6 +37,8 @@ def main() -> int:
                     help="2-means++ trials a split of the tree, or k-means runs; the cheapest kept (default 1: the paper's)")
     ap.add_argument("--describe-only", action="store_true", help="stop after describing")
     a = ap.parse_args()
+    if not 1 <= a.restarts <= placecat.MAX_RESTARTS:
+        ap.error(f"--restarts must be from 1 to {placecat.MAX_RESTARTS}, got {a.restarts}")  # before describing
 
     params = {"preset": a.preset}
     if a.params:

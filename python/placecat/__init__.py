@@ -16,6 +16,7 @@ cluster.
 
 from ._placecat import (
     MATRIX_LIMIT,
+    MAX_RESTARTS,
     Collection,
     Descriptor,
     Model,
@@ -33,6 +34,7 @@ from ._placecat import (
 
 __all__ = [
     "MATRIX_LIMIT",
+    "MAX_RESTARTS",
     "Collection",
     "Descriptor",
     "Model",

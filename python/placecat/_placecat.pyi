@@ -12,6 +12,7 @@ _Labels = Union[npt.ArrayLike, Sequence[int]]
 _Names = Union[Mapping[int, str], Sequence[Tuple[int, str]]]
 
 MATRIX_LIMIT: int
+MAX_RESTARTS: int
 
 class PlacecatError(ValueError):
     """An error of placecat's core; the message names the file."""

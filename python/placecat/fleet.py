@@ -293,6 +293,11 @@ def categorise(
     import pyarrow as pa
     import pyarrow.parquet as pq
 
+    # Before the sample is loaded, and as placecat's error for any bad count.
+    if isinstance(restarts, bool) or not isinstance(restarts, int) or not 1 <= restarts <= placecat.MAX_RESTARTS:
+        raise placecat.PlacecatError(
+            f"invalid parameter: restarts must be a whole number from 1 to {placecat.MAX_RESTARTS}, got {restarts!r}"
+        )
     col = load_collection(out, sample=sample, seed=seed)
     if len(col) == 0:
         raise placecat.PlacecatError(f"{out}: invalid parameter: no described scans")

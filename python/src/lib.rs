@@ -176,5 +176,6 @@ fn _placecat(m: &Bound<'_, PyModule>) -> PyResult<()> {
     collection::register(m)?;
     model::register(m)?;
     m.add("MATRIX_LIMIT", placecat::collection::MATRIX_LIMIT)?;
+    m.add("MAX_RESTARTS", placecat::cluster::MAX_RESTARTS)?;
     Ok(())
 }

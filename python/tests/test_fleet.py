@@ -66,8 +66,10 @@ def test_dask_run_gives_the_clis_descriptors_and_skips_the_bad_file(scans, clien
     scores = [(k, s) for k, s in c10.choice["scores"]]
     assert [k for k, _ in scores] == [k for k, _ in cli10["choice"]["scores"]]
     assert all(abs(s - t) < 1e-9 for (_, s), (_, t) in zip(scores, cli10["choice"]["scores"]))
-    with pytest.raises(placecat.PlacecatError, match="restarts must be at least 1"):
-        fleet.categorise(str(out), sample=None, seed=0, restarts=0)
+    assert cli10["choice"]["scores"] != cli_cut["choice"]["scores"], "the trials change the tree here"
+    for bad in (0, -1, 1001, 2.5, True):
+        with pytest.raises(placecat.PlacecatError, match="restarts must be a whole number from 1 to 1000"):
+            fleet.categorise(str(out), sample=None, seed=0, restarts=bad)
 
     # Restartable: a rerun describes nothing already described (the bad
     # file is tried again), and a new file only.
@@ -111,7 +113,7 @@ def test_the_example_script_runs_and_restarts(tmp_path):
 
     sim = simulate(tmp_path / "scans", seed=44, scans=1)
     cmd = [sys.executable, str(ROOT / "python/examples/fleet.py"), str(tmp_path / "scans"), "--out", str(tmp_path / "run"),
-           "--workers", "1", "--categories", "2", "--batch-size", "2"]
+           "--workers", "1", "--categories", "2", "--batch-size", "2", "--restarts", "2"]
     first = subprocess.run(cmd, capture_output=True, text=True)
     assert first.returncode == 0, first.stderr
     assert "described 5 of 5 files (0 already described, 0 skipped)" in first.stderr

@@ -78,6 +78,15 @@ impl Prepared {
     /// here, not a NaN later.
     pub fn new(d: &Descriptor, opts: DistanceOptions) -> Result<Prepared> {
         d.validate()?;
+        // DescriptorParams checks its weights; DistanceOptions' fields are
+        // public, so a NaN or negative weight made by hand stops here, not
+        // as a NaN Delta.
+        let mut weights = std::iter::once(opts.ndt_weight).chain(opts.part_weights.iter().copied());
+        if let Some(w) = weights.find(|w| !w.is_finite() || *w < 0.0) {
+            return Err(crate::Error::InvalidParameter(format!(
+                "distance weights must be finite and not negative, got {w}"
+            )));
+        }
         let total = d.total() as f32;
         let stride = d.rows.next_multiple_of(4);
         let mut padded = Vec::with_capacity(stride * d.cols * d.matrices.len());

@@ -275,12 +275,13 @@ fn tree_params(seed: u32, restarts: Option<f64>) -> crate::Result<HkMeansParams>
 fn runs(restarts: Option<f64>) -> crate::Result<usize> {
     match restarts {
         None => Ok(1),
+        // {r:?}: 1e300 and NaN print as such, not as 300 digits.
         Some(r) if r.fract() != 0.0 || r.is_nan() || r < 0.0 => Err(Error::InvalidParameter(
-            format!("restarts must be a whole number of runs, got {r}"),
+            format!("restarts must be a whole number of runs from 1, got {r:?}"),
         )),
         // Above any count the core takes (and above usize on wasm32).
         Some(r) if r > u32::MAX as f64 => Err(Error::InvalidParameter(format!(
-            "restarts = {r} is more than the limit of {} runs",
+            "restarts = {r:?} is more than the limit of {} runs",
             crate::cluster::MAX_RESTARTS
         ))),
         Some(r) => Ok(r as usize),

@@ -481,3 +481,30 @@ fn a_tie_of_range_in_a_sector_does_not_depend_on_the_order() {
     assert_eq!(one[sector], other[sector]);
     assert_eq!(one, other);
 }
+
+/// Weights made by hand in `DistanceOptions` (its fields are public) are
+/// checked where a descriptor is prepared: a NaN or negative weight is an
+/// error naming it, not a NaN Delta (`DescriptorParams` checks its own).
+#[test]
+fn hand_made_distance_weights_are_checked() {
+    let params = every_part(1.0);
+    let a = describe(&box_room(1, [8.0, 5.0, 3.0]), &params).unwrap();
+    let b = describe(&box_room(2, [6.3, 6.3, 3.0]), &params).unwrap();
+    let good = DistanceOptions::from(&params);
+    assert!(delta(&a, &b, good).unwrap().is_finite());
+    for (ndt, part, want) in [
+        (f32::NAN, 1.0, "got NaN"),
+        (-1.0, 1.0, "got -1"),
+        (1.0, f32::INFINITY, "got inf"),
+        (1.0, -0.5, "got -0.5"),
+    ] {
+        let mut opts = good;
+        opts.ndt_weight = ndt;
+        opts.part_weights[0] = part;
+        let e = delta(&a, &b, opts).unwrap_err().to_string();
+        assert!(
+            e.contains("distance weights must be finite and not negative") && e.contains(want),
+            "{e}"
+        );
+    }
+}

@@ -150,11 +150,18 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     }
     let e = message(set.kmeans(3, "plusplus", 1, Some(2.5)).err().unwrap());
     assert!(
-        e.contains("restarts must be a whole number of runs, got 2.5"),
+        e.contains("restarts must be a whole number of runs from 1, got 2.5"),
         "{e}"
     );
-    let e = message(set.hkmeans(2, Some(2f64.powi(40))).err().unwrap());
-    assert!(e.contains("is more than the limit of 1000"), "{e}");
+    let e = message(set.choose_k("plusplus", 1, Some(-1.0)).err().unwrap());
+    assert!(e.contains("got -1.0"), "{e}");
+    let e = message(set.hkmeans(2, Some(-0.0)).err().unwrap());
+    assert!(e.contains("restarts must be at least 1"), "{e}");
+    for huge in [2f64.powi(40), 1e300] {
+        let e = message(set.hkmeans(2, Some(huge)).err().unwrap());
+        assert!(e.contains("is more than the limit of 1000"), "{e}");
+        assert!(e.len() < 120, "{e}");
+    }
     let e = message(other.reference_dispersions(2, &[10], None).err().unwrap());
     assert!(e.contains("reference set 10 asked for, of 10"), "{e}");
 }
