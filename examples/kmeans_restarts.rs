@@ -124,14 +124,6 @@ fn lowest(sets: &[&SetResult], preset: &str, f: impl Fn(&Figures) -> f64) -> f64
     lowest_over(sets, |s| of(s, preset, &f))
 }
 
-fn target(family: &str) -> &'static str {
-    match family {
-        "warehouse" => "at least 95 %",
-        "outdoor" => "not worse than the paper's preset",
-        _ => "at least 85 %",
-    }
-}
-
 fn table(
     o: &mut String,
     r: &Report,
@@ -139,35 +131,30 @@ fn table(
     sensor_filter: impl Fn(&str) -> bool,
 ) -> Res<()> {
     writeln!(o, "| family | sensor | preset | stride k-means | hk-means++ | k-means++ (1 run) | k-means++ best of 10: mean | lowest | ARI | target |\n|---|---|---|---|---|---|---|---|---|---|")?;
-    for (family, presets) in &r.presets {
-        let mut sensors: Vec<&str> = all
-            .iter()
-            .filter(|s| &s.family == family && sensor_filter(&s.sensor))
-            .map(|s| s.sensor.as_str())
-            .collect();
-        sensors.dedup();
-        for sensor in sensors {
-            let sets: Vec<&SetResult> = all
-                .iter()
-                .filter(|s| &s.family == family && s.sensor == sensor)
-                .collect();
-            for (i, p) in presets.iter().enumerate() {
-                let tag = if i == 0 { " (paper)" } else { "" };
-                writeln!(
-                    o,
-                    "| {family} | {sensor} | `{p}`{tag} | {} | {} | {} | {} | {} | {:.3} | {} |",
-                    pct(mean(&sets, p, |f| f.stride.accuracy)),
-                    pct(mean(&sets, p, |f| f.hk.accuracy)),
-                    pct(mean(&sets, p, |f| f.plusplus.accuracy)),
-                    pct(mean(&sets, p, |f| f.best_of_10.accuracy)),
-                    pct(lowest(&sets, p, |f| f.best_of_10.lowest)),
-                    mean(&sets, p, |f| f.best_of_10.ari),
-                    if i == 0 { "-" } else { target(family) },
-                )?;
-            }
-        }
+    fn key(s: &SetResult) -> (&str, &str) {
+        (s.family.as_str(), s.sensor.as_str())
     }
-    Ok(())
+    each_row(
+        &r.presets,
+        all,
+        key,
+        sensor_filter,
+        |family, sensor, sets, i, p| {
+            let tag = if i == 0 { " (paper)" } else { "" };
+            writeln!(
+                o,
+                "| {family} | {sensor} | `{p}`{tag} | {} | {} | {} | {} | {} | {:.3} | {} |",
+                pct(mean(sets, p, |f| f.stride.accuracy)),
+                pct(mean(sets, p, |f| f.hk.accuracy)),
+                pct(mean(sets, p, |f| f.plusplus.accuracy)),
+                pct(mean(sets, p, |f| f.best_of_10.accuracy)),
+                pct(lowest(sets, p, |f| f.best_of_10.lowest)),
+                mean(sets, p, |f| f.best_of_10.ari),
+                if i == 0 { "-" } else { target(family) },
+            )?;
+            Ok(())
+        },
+    )
 }
 
 /// What the round showed, written after its one test run (nothing was

@@ -117,11 +117,16 @@ fn trees(space: &Space, m: &DistanceMatrix, trials: usize) -> Res<Trees> {
         .map_err(Into::into)
 }
 
-fn measure(space: &Space, truth: &[String], k: usize) -> Res<(Figures, [Trees; 2])> {
-    let m = space.matrix();
+/// `m`: the space's Delta matrix (the caller's, so it is computed once).
+fn measure(
+    space: &Space,
+    m: &DistanceMatrix,
+    truth: &[String],
+    k: usize,
+) -> Res<(Figures, [Trees; 2])> {
     let stride = KMeans::fit(space, &KMeansParams::new(k).seeding(Seeding::Stride))?.labels;
-    let one = trees(space, &m, 1)?;
-    let ten = trees(space, &m, TRIALS)?;
+    let one = trees(space, m, 1)?;
+    let ten = trees(space, m, TRIALS)?;
     let cut =
         |t: &[(HkMeansParams, Tree)]| over_seeds(truth, |s| Ok(t[s as usize].1.cut_k(k)?.labels));
     let figures = Figures {
@@ -140,7 +145,10 @@ fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<
     let mut out = vec![];
     for (name, p, ds) in &set.presets {
         let space = Space::new(ds, DistanceOptions::from(p))?;
-        out.push((name.clone(), measure(&space, &set.truth, set.kinds)?.0));
+        out.push((
+            name.clone(),
+            measure(&space, &space.matrix(), &set.truth, set.kinds)?.0,
+        ));
     }
     Ok(FamilySet {
         family: f.name.into(),
@@ -166,8 +174,8 @@ fn site_set(scene: SceneKind, seed: u64) -> Res<SiteSet> {
         .collect::<placecat::Result<_>>()?;
     let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
     let space = Space::new(&ds, DistanceOptions::from(&params))?;
-    let (figures, [one, ten]) = measure(&space, &truth, 3)?;
     let m = space.matrix();
+    let (figures, [one, ten]) = measure(&space, &m, &truth, 3)?;
     let choose = |t: &[(HkMeansParams, Tree)]| -> Res<Vec<Chosen>> {
         t.par_iter()
             .map(|(p, tree)| {
@@ -224,14 +232,6 @@ fn run(
     })
 }
 
-fn target(family: &str) -> &'static str {
-    match family {
-        "warehouse" => "at least 95 %",
-        "outdoor" => "not worse than the paper's preset",
-        _ => "at least 85 %",
-    }
-}
-
 fn family_table(
     o: &mut String,
     r: &Report,
@@ -239,39 +239,34 @@ fn family_table(
     sensor_filter: impl Fn(&str) -> bool,
 ) -> Res<()> {
     writeln!(o, "| family | sensor | preset | stride k-means | k-means++ best of 10 | hk-means++, 1 trial: mean | lowest | hk-means++, 10 trials: mean | lowest | ARI | target |\n|---|---|---|---|---|---|---|---|---|---|---|")?;
-    for (family, presets) in &r.presets {
-        let mut sensors: Vec<&str> = all
-            .iter()
-            .filter(|s| &s.family == family && sensor_filter(&s.sensor))
-            .map(|s| s.sensor.as_str())
-            .collect();
-        sensors.dedup();
-        for sensor in sensors {
-            let sets: Vec<&FamilySet> = all
-                .iter()
-                .filter(|s| &s.family == family && s.sensor == sensor)
-                .collect();
-            for (i, p) in presets.iter().enumerate() {
-                let of = |f: fn(&Figures) -> f64| {
-                    move |s: &FamilySet| s.presets.iter().find(|q| &q.0 == p).map(|q| f(&q.1))
-                };
-                let tag = if i == 0 { " (paper)" } else { "" };
-                writeln!(
-                    o,
-                    "| {family} | {sensor} | `{p}`{tag} | {} | {} | {} | {} | {} | {} | {:.3} | {} |",
-                    pct(mean_over(&sets, of(|f| f.stride.accuracy))),
-                    pct(mean_over(&sets, of(|f| f.best_of_10.accuracy))),
-                    pct(mean_over(&sets, of(|f| f.hk.accuracy))),
-                    pct(lowest_over(&sets, of(|f| f.hk.lowest))),
-                    pct(mean_over(&sets, of(|f| f.hk_trials.accuracy))),
-                    pct(lowest_over(&sets, of(|f| f.hk_trials.lowest))),
-                    mean_over(&sets, of(|f| f.hk_trials.ari)),
-                    if i == 0 { "-" } else { target(family) },
-                )?;
-            }
-        }
+    fn key(s: &FamilySet) -> (&str, &str) {
+        (s.family.as_str(), s.sensor.as_str())
     }
-    Ok(())
+    each_row(
+        &r.presets,
+        all,
+        key,
+        sensor_filter,
+        |family, sensor, sets, i, p| {
+            let of = |f: fn(&Figures) -> f64| {
+                move |s: &FamilySet| s.presets.iter().find(|q| q.0 == p).map(|q| f(&q.1))
+            };
+            let tag = if i == 0 { " (paper)" } else { "" };
+            writeln!(
+                o,
+                "| {family} | {sensor} | `{p}`{tag} | {} | {} | {} | {} | {} | {} | {:.3} | {} |",
+                pct(mean_over(sets, of(|f| f.stride.accuracy))),
+                pct(mean_over(sets, of(|f| f.best_of_10.accuracy))),
+                pct(mean_over(sets, of(|f| f.hk.accuracy))),
+                pct(lowest_over(sets, of(|f| f.hk.lowest))),
+                pct(mean_over(sets, of(|f| f.hk_trials.accuracy))),
+                pct(lowest_over(sets, of(|f| f.hk_trials.lowest))),
+                mean_over(sets, of(|f| f.hk_trials.ari)),
+                if i == 0 { "-" } else { target(family) },
+            )?;
+            Ok(())
+        },
+    )
 }
 
 /// K chosen over the trees, e.g. "2x1 3x9".

@@ -191,3 +191,45 @@ pub fn lowest_over<S>(sets: &[&S], figure: impl Fn(&S) -> Option<f64>) -> f64 {
         .filter_map(|s| figure(s))
         .fold(f64::NAN, f64::min)
 }
+
+/// Issue 18's target for a family's new presets.
+pub fn target(family: &str) -> &'static str {
+    match family {
+        "warehouse" => "at least 95 %",
+        "outdoor" => "not worse than the paper's preset",
+        _ => "at least 85 %",
+    }
+}
+
+/// A table's rows, grouped as every round's tables are: for each family
+/// (in `presets`' order) and each of its sensors that `sensor_filter`
+/// keeps, the sets of that family and sensor, then `row(family, sensor,
+/// sets, index, preset)` for each of the family's presets (index 0: the
+/// paper's). `key` gives a set's (family, sensor).
+pub fn each_row<S>(
+    presets: &[(String, Vec<String>)],
+    all: &[S],
+    key: impl Fn(&S) -> (&str, &str),
+    sensor_filter: impl Fn(&str) -> bool,
+    mut row: impl FnMut(&str, &str, &[&S], usize, &str) -> Res<()>,
+) -> Res<()> {
+    for (family, names) in presets {
+        let mut sensors: Vec<&str> = all
+            .iter()
+            .map(&key)
+            .filter(|(f, s)| f == family && sensor_filter(s))
+            .map(|(_, s)| s)
+            .collect();
+        sensors.dedup();
+        for sensor in sensors {
+            let sets: Vec<&S> = all
+                .iter()
+                .filter(|s| key(s) == (family.as_str(), sensor))
+                .collect();
+            for (i, p) in names.iter().enumerate() {
+                row(family, sensor, &sets, i, p)?;
+            }
+        }
+    }
+    Ok(())
+}
