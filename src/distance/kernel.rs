@@ -24,14 +24,17 @@ pub fn matrix_distance_below(
     bound: f32,
 ) -> f32 {
     debug_assert!(a.len() == rows * cols && b.len() == rows * cols);
-    kernel::<0>(a, b, rows, metric, bound)
+    kernel::<0, false>(a, b, rows, metric, bound)
 }
 
 /// The kernel. `CHUNKS` is `rows / 4` when the caller knows it (the
 /// compiler then unrolls the columns of the usual shapes: 11 rows padded
-/// to 12 -> 3 chunks of 4), or 0 for any number of rows.
+/// to 12 -> 3 chunks of 4), or 0 for any number of rows. `ROOTED`: for
+/// Hellinger, `a` and `b` are already square roots ([`Prepared::roots`]);
+/// the same operations in the same order follow, so the value is the same
+/// to the bit.
 #[inline]
-fn kernel<const CHUNKS: usize>(
+fn kernel<const CHUNKS: usize, const ROOTED: bool>(
     a: &[f32],
     b: &[f32],
     rows: usize,
@@ -51,12 +54,30 @@ fn kernel<const CHUNKS: usize>(
             sum
         }
         Metric::Hellinger => {
-            let s: f32 = a
-                .iter()
-                .zip(b)
-                .map(|(x, y)| (x.sqrt() - y.sqrt()).powi(2))
-                .sum();
-            (0.5 * s).sqrt()
+            // Column by column in four lanes, as the paper's metric, and
+            // stop once half the sum reaches bound^2. The Delta matrix of
+            // 1,000 outdoor scans took 3.7 s of CPU summing the whole
+            // matrix in order with the roots taken here, 2.0 s in lanes,
+            // and with the roots taken once (`Prepared::roots`) as little
+            // as the paper's metric (docs/hellinger.md).
+            let rows = if CHUNKS > 0 { 4 * CHUNKS } else { rows };
+            let stop = 2.0 * bound * bound;
+            let mut sum = 0f32;
+            for (ca, cb) in a.chunks_exact(rows).zip(b.chunks_exact(rows)) {
+                sum += if ROOTED {
+                    squared_l2(ca, cb)
+                } else {
+                    lane_sum(ca, cb, |x, y| {
+                        let d = x.sqrt() - y.sqrt();
+                        d * d
+                    })
+                };
+                if sum >= stop {
+                    // Rounding must not take it under the bound.
+                    return (0.5 * sum).sqrt().max(bound);
+                }
+            }
+            (0.5 * sum).sqrt()
         }
         Metric::ChiSquared => {
             0.5 * a
@@ -74,24 +95,32 @@ fn kernel<const CHUNKS: usize>(
     }
 }
 
-/// Squared Euclidean distance in four independent lanes: a plain `sum()`
+/// Squared Euclidean distance in four independent lanes (see [`lane_sum`]).
+#[inline]
+fn squared_l2(a: &[f32], b: &[f32]) -> f32 {
+    lane_sum(a, b, |x, y| {
+        let d = x - y;
+        d * d
+    })
+}
+
+/// The sum of `term(a[i], b[i])` in four independent lanes: a plain `sum()`
 /// of f32 must keep its order, so the compiler cannot use SIMD for it; four
 /// lanes let it. A short last chunk goes to the first lanes, so a column
 /// padded with zeros to a multiple of four (as in [`Prepared::padded`])
-/// gives exactly the same value.
-#[inline]
-fn squared_l2(a: &[f32], b: &[f32]) -> f32 {
+/// gives exactly the same value when `term(0, 0)` is 0.
+#[inline(always)]
+fn lane_sum(a: &[f32], b: &[f32], term: impl Fn(f32, f32) -> f32) -> f32 {
     let mut lanes = [0f32; 4];
     let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
     let (ra, rb) = (a4.remainder(), b4.remainder());
     for (x, y) in a4.zip(b4) {
         for k in 0..4 {
-            let d = x[k] - y[k];
-            lanes[k] += d * d;
+            lanes[k] += term(x[k], y[k]);
         }
     }
     for (k, (x, y)) in ra.iter().zip(rb).enumerate() {
-        lanes[k] += (x - y) * (x - y);
+        lanes[k] += term(*x, *y);
     }
     (lanes[0] + lanes[2]) + (lanes[1] + lanes[3])
 }
@@ -132,9 +161,17 @@ fn ndt_delta(a: &Prepared, b: &Prepared, metric: Metric) -> f32 {
 #[inline]
 fn best_pair<const CHUNKS: usize>(a: &Prepared, b: &Prepared, metric: Metric) -> f32 {
     let mut best = f32::INFINITY;
-    for fa in a.candidates() {
-        for fb in b.candidates() {
-            best = best.min(kernel::<CHUNKS>(fa, fb, a.stride, metric, best));
+    if metric == Metric::Hellinger && !a.roots.is_empty() && !b.roots.is_empty() {
+        for fa in a.root_candidates() {
+            for fb in b.root_candidates() {
+                best = best.min(kernel::<CHUNKS, true>(fa, fb, a.stride, metric, best));
+            }
+        }
+    } else {
+        for fa in a.candidates() {
+            for fb in b.candidates() {
+                best = best.min(kernel::<CHUNKS, false>(fa, fb, a.stride, metric, best));
+            }
         }
     }
     best

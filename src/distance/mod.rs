@@ -183,6 +183,39 @@ mod tests {
         }
     }
 
+    /// The Hellinger option on counts worked by hand: F = [[1, 3]] (|F| 4)
+    /// and G = [[4, 0], [0, 4]] (|G| 8, one more row of zeros in F's
+    /// shape): sqrt(1/2 ((1/2 - sqrt(1/2))^2 + (sqrt(3)/2 - 0)^2 +
+    /// (0 - sqrt(1/2))^2)) = sqrt(1 - sqrt(1/8)) = 0.80402..., times the
+    /// size factor 8/4 = 2.
+    #[test]
+    fn hellinger_on_counts_worked_by_hand() {
+        let one = |m: Vec<u32>| Descriptor {
+            rows: 2,
+            cols: 2,
+            matrices: vec![m],
+            summary: Default::default(),
+            parts: Vec::new(),
+        };
+        // Row-major: F = [[1, 3], [0, 0]], G = [[4, 0], [0, 4]].
+        let (f, g) = (one(vec![1, 3, 0, 0]), one(vec![4, 0, 0, 4]));
+        let opts = DistanceOptions {
+            metric: Metric::Hellinger,
+            ..DistanceOptions::default()
+        };
+        let (pf, pg) = (
+            Prepared::new(&f, opts).unwrap(),
+            Prepared::new(&g, opts).unwrap(),
+        );
+        let want = 2.0 * (1.0 - (1.0f64 / 8.0).sqrt()).sqrt();
+        let got = delta_prepared(&pf, &pg, Metric::Hellinger) as f64;
+        assert!((got - want).abs() < 1e-6, "{got} against {want}");
+        // Identical histograms of any size are at 0 before the size factor.
+        let f2 = one(vec![2, 6, 0, 0]);
+        let pf2 = Prepared::new(&f2, opts).unwrap();
+        assert_eq!(delta_prepared(&pf, &pf2, Metric::Hellinger), 0.0);
+    }
+
     #[test]
     fn nearest_other_skips_the_scan_itself() {
         // Distances 0-1: 1.0, 0-2: 0.5, 1-2: 2.0.

@@ -36,10 +36,7 @@ pub(crate) fn reference(space: &Space, m: usize, seed: u64) -> Space {
                 let src = &space.items[r.random_range(0..n)];
                 let src_candidates = src.padded.len() / size;
                 for j in 0..candidates {
-                    let from = (j % src_candidates) * size + c * item.stride;
-                    let to = j * size + c * item.stride;
-                    item.padded[to..to + item.stride]
-                        .copy_from_slice(&src.padded[from..from + item.stride]);
+                    item.copy_column(j, c, src, j % src_candidates);
                 }
             }
             // Extra parts come from yet another scan (drawn only when there
