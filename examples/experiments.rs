@@ -850,6 +850,11 @@ const BOUNDARY_ERRORS_TEXT: &str = include_str!("common/sites_boundary_errors.md
 /// section 4 stay the paper's tree.
 const FIFTH_ROUND_TEXT: &str = include_str!("common/sites_fifth_round.md");
 
+/// Issues 14 and 18's sixth round: the Hellinger distance
+/// (`examples/hellinger.rs`, docs/hellinger.md); the tables of section 4
+/// stay the paper's distance.
+const SIXTH_ROUND_TEXT: &str = include_str!("common/sites_sixth_round.md");
+
 /// The outdoor site's rows of the second round, as measured then: the
 /// third round changed the site, so they cannot be computed again.
 const SECOND_ROUND_OUTDOOR: &str = include_str!("common/sites_second_round_outdoor.md");
@@ -1042,11 +1047,12 @@ fn render_sensitivity(out: &mut String, rows: &[SensitivityRow]) -> Fmt {
 fn render_sites(out: &mut String, sites: &[SiteSection]) -> Fmt {
     writeln!(
         out,
-        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n\n{}\n\n{}\n\n{}\n",
+        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n\n{}\n\n{}\n\n{}\n\n{}\n",
         THIRD_ROUND_TEXT.trim(),
         FOURTH_ROUND_TEXT.trim(),
         BOUNDARY_ERRORS_TEXT.trim(),
-        FIFTH_ROUND_TEXT.trim()
+        FIFTH_ROUND_TEXT.trim(),
+        SIXTH_ROUND_TEXT.trim()
     )?;
     for site in sites {
         render_site(out, site)?;

@@ -16,6 +16,7 @@ import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince, clearStages } from './stages.js';
 import { matrixInWorkers, referencesInWorkers, tailKey, oneAtATime } from './matrix.js';
+import { OUTDOOR_PRESET } from './suggest.js';
 
 /** @typedef {import('./state.js').State} State */
 /** How often a run shows its progress and saves its results (ms). */
@@ -108,8 +109,8 @@ async function loadFiles(list) {
   const inputs = await chooseBagReading(pool, scans.map((s, i) => ({ name: names[i], file: s.file })));
   if (!inputs) return; // files dropped again while a bag's topic was asked for
   const run = { datasetId: datasetId(names), demo: null, inputs };
-  // The data suggest indoor or outdoor unless the user chose another preset or edited the parameters.
-  const own = !['indoor', 'outdoor'].includes(preset()) || $('advanced').value !== JSON.stringify(engine.presetParams(preset()), null, 1);
+  // The data suggest indoor or outdoor unless the user chose another preset (the paper's two and the suggested ones do not stick) or edited the parameters.
+  const own = !['indoor', 'outdoor', OUTDOOR_PRESET].includes(preset()) || $('advanced').value !== JSON.stringify(engine.presetParams(preset()), null, 1);
   await describeAll(run, { suggest: !own, withPosesFile: poses.length > 0, fromFiles: true });
 }
 
@@ -190,7 +191,7 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
     if (show) saved.then(() => current() && !finished && view.progress(show[0], show[1], 'running', unit));
   });
   unsaved = tick;
-  const byPreset = suggest ? { indoor: engine.presetParams('indoor'), outdoor: engine.presetParams('outdoor') } : null;
+  const byPreset = suggest ? { indoor: engine.presetParams('indoor'), [OUTDOOR_PRESET]: engine.presetParams(OUTDOOR_PRESET) } : null;
   const described = describeInputs(pool, inputs, { params, byPreset }, {
     onPreset: (p, chosen) => current() && (setPreset(p), (state = S.withParams(state, chosen))),
     // A bag's jth cloud is stored at i + j / 1e7: after input i, before i + 1, in order.

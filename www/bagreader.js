@@ -13,7 +13,7 @@ import { rangeShare, suggestPreset } from './suggest.js';
  * A bag to describe: the cloud topic (none: the bag's only one), and the
  * thinning: every Nth cloud, or one every so many metres along the path.
  * @typedef {{file: File, name: string, topic?: string, every?: number, everyMetres?: number,
- *   params: Params, byPreset?: Record<'indoor' | 'outdoor', Params>, previewPoints?: number}} BagTask
+ *   params: Params, byPreset?: Record<import('./suggest.js').SuggestedPreset, Params>, previewPoints?: number}} BagTask
  */
 /** A partial reply: a described cloud or one that failed, and how far the reading is.
  * @typedef {{scan?: ScanResult, error?: string, met: number, total: number}} BagPartial */
@@ -70,7 +70,7 @@ const nextOf = (clouds) => {
  */
 export function describeBag(wasm, t, post) {
   let clouds = open(wasm, t, t.byPreset?.indoor ?? t.params);
-  /** @type {{preset?: 'indoor' | 'outdoor', far?: number}} */
+  /** @type {{preset?: import('./suggest.js').SuggestedPreset, far?: number}} */
   const chosen = {};
   let kept = 0, failed = 0, tries = 0;
   try {

@@ -23,8 +23,8 @@ import { taskOf } from './state.js';
  * `results[i]`: the input's scan, or a bag's scans so far (kept when the
  * run is cancelled or the bag fails half way).
  * @param {import('./pool.js').WorkerPool} pool @param {import('./state.js').Input[]} inputs
- * @param {{params: Params, byPreset: Record<'indoor' | 'outdoor', Params> | null}} how
- * @param {{onPreset: (preset: 'indoor' | 'outdoor', params: Params) => void, onResult: (i: number, r: ScanResult, j: number) => void,
+ * @param {{params: Params, byPreset: Record<import('./suggest.js').SuggestedPreset, Params> | null}} how
+ * @param {{onPreset: (preset: import('./suggest.js').SuggestedPreset, params: Params) => void, onResult: (i: number, r: ScanResult, j: number) => void,
  *   onError: (i: number, e: Error) => void, onProgress: (done: number, total: number) => void}} on
  * @returns {Promise<{results: (ScanResult | ScanResult[] | undefined)[], done: number, total: number, suggestion: Suggestion | null,
  *   bags: (import('./bag.js').BagInfo | undefined)[]}>} `bags`: what each bag's worker said of it at the end

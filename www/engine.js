@@ -24,7 +24,7 @@ import { choiceReason, rangeShare, siteSubsample, suggestPreset } from './sugges
  * share of its points beyond 10 m, when asked for (the preset suggestion);
  * `preset`: the preset it was described with, when the describer chose it.
  * @typedef {{name: string, format: string, descriptorJson: string, summary: Summary,
- *   preview: Float32Array, site?: Float32Array, label?: string, pose?: Pose, far?: number, preset?: 'indoor' | 'outdoor'}} ScanResult
+ *   preview: Float32Array, site?: Float32Array, label?: string, pose?: Pose, far?: number, preset?: import('./suggest.js').SuggestedPreset}} ScanResult
  */
 /** A tree as plain data: its nodes (node 0 is the root), the root's height, its 2-means++ trials a split.
  * @typedef {{nodes: TreeNode[], rootHeight: number, restarts: number}} TreeData */
@@ -385,7 +385,7 @@ export class Describer {
    * preset, and it is described with that preset's parameters (`byPreset`).
    * The file's bytes are read once; only the parse is done twice (positions,
    * then the descriptor), so nothing is read again once the preset is known.
-   * @param {Uint8Array} bytes @param {string} name @param {Record<'indoor' | 'outdoor', Params>} byPreset
+   * @param {Uint8Array} bytes @param {string} name @param {Record<import('./suggest.js').SuggestedPreset, Params>} byPreset
    * @param {number} [previewPoints] @returns {ScanResult}
    */
   describeSuggesting(bytes, name, byPreset, previewPoints = 3000) {

@@ -4,7 +4,7 @@
 import { fileRows, formatCsv } from './csv.js';
 import { baseName } from './files.js';
 import { defaultScale } from './scale.js';
-import { siteSubsample } from './suggest.js';
+import { siteSubsample, OUTDOOR_PRESET } from './suggest.js';
 
 /** @typedef {import('./engine.js').ScanResult} ScanResult */
 /** @typedef {import('./engine.js').Params} Params */
@@ -53,7 +53,7 @@ import { siteSubsample } from './suggest.js';
  * @property {{k: number, why: string} | null} firstCut how the first cut of the current tree was chosen
  */
 /** The preset suggested for a data set, from the share of far points of its first scan.
- * @typedef {{preset: 'indoor' | 'outdoor', far: number, from: string}} Suggestion */
+ * @typedef {{preset: import('./suggest.js').SuggestedPreset, far: number, from: string}} Suggestion */
 
 /** @returns {State} */
 export function initialState() {
@@ -74,12 +74,14 @@ const NO_RESULTS = { scans: [], errors: [], set: null, tree: null, cut: null, la
 export const DEMO_ROUTE_SCANS = 300;
 
 /**
- * Each demo scene's preset. The warehouse is a building: the paper
- * describes ArlaWarehouse with the indoor preset, and so do the site's
- * figures in docs/experiments.md (there is no `warehouse` preset).
- * @type {Record<Scene, 'indoor' | 'outdoor'>}
+ * Each demo scene's preset: the one the page suggests for such scans. The
+ * warehouse is a building: the paper describes ArlaWarehouse with the
+ * indoor preset, and so do the site's figures in docs/experiments.md. The
+ * outdoor site gets the suggested OUTDOOR_PRESET (the paper's outdoor
+ * parameters, Hellinger distance; docs/hellinger.md).
+ * @type {Record<Scene, import('./suggest.js').SuggestedPreset>}
  */
-export const DEMO_PRESET = { indoor: 'indoor', warehouse: 'indoor', outdoor: 'outdoor' };
+export const DEMO_PRESET = { indoor: 'indoor', warehouse: 'indoor', outdoor: OUTDOOR_PRESET };
 
 /**
  * The inputs of the demo: 8 rooms x 5 indoor scans, or 300 scans along the

@@ -65,12 +65,14 @@ test('dragging the threshold changes the number of categories', async () => {
   // A new seed keeps the number of categories asked for and re-cuts the
   // new tree. The page's default tree (ten trial splits for these 18 scans)
   // is the same for seeds 3 and 0 here, so this runs on the paper's tree
-  // (one run a split, under "Splits"): on these scans (described with the
-  // outdoor preset, which the first, a KITTI scan, suggests) 7 categories
-  // are the cut at 0.2561 with seed 3 and at 0.2452 with seed 0; a page
-  // that kept the last threshold instead of re-cutting would show the same
-  // threshold twice. (Under the indoor preset: 0.2122 and 0.2218, checked
-  // by disabling the re-cut, which failed here with 0.2218 twice.)
+  // (one run a split, under "Splits"): on these scans (described with
+  // outdoor_hellinger, which the first, a KITTI scan, suggests) 7 categories
+  // are the cut at 0.1701 with seed 3 and at 0.1937 with seed 0 (`placecat
+  // cluster --method hkmeans --categories 7 --seed 3|0`); a page that kept
+  // the last threshold instead of re-cutting would show the same threshold
+  // twice. (Under the paper's outdoor preset: 0.2561 and 0.2452; under the
+  // indoor preset: 0.2122 and 0.2218, checked by disabling the re-cut,
+  // which failed here with 0.2218 twice.)
   const thresholds = [];
   try {
     await h.page.selectOption('#hk-splits', '1');

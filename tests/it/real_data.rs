@@ -66,6 +66,13 @@ fn nearest_scan_is_from_the_same_place_outdoor_preset() {
     check(DescriptorParams::outdoor());
 }
 
+/// The page's outdoor suggestion (the paper's outdoor parameters with the
+/// Hellinger distance): 18 of 18 as the paper's (docs/hellinger.md).
+#[test]
+fn nearest_scan_is_from_the_same_place_outdoor_hellinger_preset() {
+    check(DescriptorParams::outdoor_hellinger());
+}
+
 /// The presets whose slice and clutter parts changed when a sector's
 /// vertex among returns at the same range stopped depending on the points'
 /// order (the real files' quantised coordinates tie often): their

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { describeInputs } from '../../www/describe.js';
 import { WorkerPool } from '../../www/pool.js';
 
-const byPreset = /** @type {any} */ ({ indoor: { preset: 'indoor' }, outdoor: { preset: 'outdoor' } });
+const byPreset = /** @type {any} */ ({ indoor: { preset: 'indoor' }, outdoor_hellinger: { preset: 'outdoor_hellinger' } });
 const inputs = ['bad.ply', 'a.bin', 'b.bin', 'c.bin'].map((name) => ({ name, file: /** @type {any} */ ({}) }));
 
 /** A bag of 5 clouds, the 2nd unreadable, 3 kept: partial replies as bagreader.js sends them. */
@@ -27,7 +27,7 @@ function fakePool(fail = (name) => name === 'bad.ply' ? new Error('bad.ply: trun
       const e = fail(task.name);
       if (e) throw e;
       if (task.type === 'bag') return bagRun(task, onPartial);
-      return task.byPreset ? { name: task.name, far: 0.3, preset: 'outdoor', params: task.byPreset.outdoor } : { name: task.name, params: task.params };
+      return task.byPreset ? { name: task.name, far: 0.3, preset: 'outdoor_hellinger', params: task.byPreset.outdoor_hellinger } : { name: task.name, params: task.params };
     },
     runAll: WorkerPool.prototype.runAll,
   };
@@ -44,13 +44,13 @@ test('the first scan that reads picks the preset; a failed first scan passes the
     onProgress: (n, total) => seen.settled.push([n, total]),
   });
   assert.deepEqual(seen.errors, [[0, 'bad.ply: truncated']]);
-  assert.deepEqual(seen.presets, [['outdoor', 'outdoor']]);
+  assert.deepEqual(seen.presets, [['outdoor_hellinger', 'outdoor_hellinger']]);
   assert.deepEqual(pool.tasks.map((t) => [t.name, Boolean(t.byPreset), t.params.preset]), [
-    ['bad.ply', true, 'indoor'], ['a.bin', true, 'indoor'], ['b.bin', false, 'outdoor'], ['c.bin', false, 'outdoor'],
+    ['bad.ply', true, 'indoor'], ['a.bin', true, 'indoor'], ['b.bin', false, 'outdoor_hellinger'], ['c.bin', false, 'outdoor_hellinger'],
   ]);
   assert.deepEqual(Array.from(out.results, (r) => r?.name), [undefined, 'a.bin', 'b.bin', 'c.bin']);
   assert.equal(out.done, 4);
-  assert.deepEqual(out.suggestion, { preset: 'outdoor', far: 0.3, from: 'a.bin' });
+  assert.deepEqual(out.suggestion, { preset: 'outdoor_hellinger', far: 0.3, from: 'a.bin' });
   assert.deepEqual(seen.settled.slice(0, 2), [[1, 4], [2, 4]]);
   assert.deepEqual(seen.settled.at(-1), [4, 4]);
 });

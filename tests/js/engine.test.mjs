@@ -197,12 +197,14 @@ test('the first scan of a data set picks the preset from its far points and is d
   const { readFileSync } = await import('node:fs');
   const real = new URL('../data/real/', import.meta.url); // tests/data/real, as the e2e harness's REAL
   const d = new Describer(wasm);
-  const byPreset = { indoor: wasm.presetParams('indoor'), outdoor: wasm.presetParams('outdoor') };
+  const byPreset = { indoor: wasm.presetParams('indoor'), outdoor_hellinger: wasm.presetParams('outdoor_hellinger') };
   const kitti = d.describeSuggesting(readFileSync(new URL('kitti00/000094.bin', real)), '000094.bin', byPreset);
   // 26.1 % of its 121618 points lie beyond 15 m horizontally (a road).
-  assert.equal(kitti.preset, 'outdoor');
+  assert.equal(kitti.preset, 'outdoor_hellinger');
   assert.ok(Math.abs((kitti.far ?? 0) - 0.261) < 0.001, `${kitti.far}`);
-  assert.equal(JSON.parse(kitti.descriptorJson).cols, 5, 'the outdoor preset has 5 ranges');
+  assert.equal(JSON.parse(kitti.descriptorJson).cols, 5, 'the outdoor ranges: 5');
+  assert.equal(byPreset.outdoor_hellinger.metric, 'hellinger');
+  assert.deepEqual({ ...byPreset.outdoor_hellinger, preset: 'outdoor', metric: 'paper' }, wasm.presetParams('outdoor'), 'otherwise the paper\'s outdoor');
   const room = d.describeSuggesting(readFileSync(new URL('pcl_room/room_scan1.pcd', real)), 'room_scan1.pcd', byPreset);
   assert.equal(room.preset, 'indoor');
   assert.ok((room.far ?? 1) < 0.01);

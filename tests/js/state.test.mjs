@@ -157,7 +157,7 @@ test('the outdoor and warehouse demos: 300 scans along a route, drawn by their p
   }
   assert.equal(S.posesOf(S.finishRun(S.beginRun(S.initialState(), { ...S.demoInputs('indoor'), demo: 'indoor', anchors: {}, params: /** @type {any} */ ({}) }), [scan('scan_00000.ply')])).usePoses, false, 'indoor: separate rooms');
   // The warehouse has no preset of its own: indoor, as for the paper's ArlaWarehouse.
-  assert.deepEqual(S.DEMO_PRESET, { indoor: 'indoor', warehouse: 'indoor', outdoor: 'outdoor' });
+  assert.deepEqual(S.DEMO_PRESET, { indoor: 'indoor', warehouse: 'indoor', outdoor: 'outdoor_hellinger' });
 });
 
 test('the dendrogram gets, per cut node, its category and central preview', () => {

@@ -10,9 +10,9 @@ test('the share of points beyond 15 m is horizontal, skips non-finite points, an
   const xyz = Float32Array.from([9, 12, 50, 11, 11, 0, NaN, 0, 0, 0, 16, -1]);
   assert.deepEqual(rangeShare(xyz), { far: 2 / 3, points: 3 });
   assert.deepEqual(rangeShare(new Float32Array(0)), { far: 0, points: 0 });
-  assert.equal(suggestPreset(0.14), 'outdoor');
+  assert.equal(suggestPreset(0.14), 'outdoor_hellinger');
   assert.equal(suggestPreset(0.139), 'indoor');
-  assert.equal(suggestionText({ preset: 'outdoor', far: 0.256, from: 'a.bin' }), 'outdoor suggested: 26 % of the points of a.bin lie beyond 15 m (14 % or more: open space)');
+  assert.equal(suggestionText({ preset: 'outdoor_hellinger', far: 0.256, from: 'a.bin' }), 'outdoor_hellinger suggested: 26 % of the points of a.bin lie beyond 15 m (14 % or more: open space)');
   assert.equal(suggestionText({ preset: 'indoor', far: 0.003, from: 'b.pcd' }), 'indoor suggested: 0 % of the points of b.pcd lie beyond 15 m (under 14 %: a room or hall)');
 });
 
