@@ -277,6 +277,27 @@ fn describe_parts(c: &mut Criterion) {
         &ds,
         |b, x| b.iter(|| delta_matrix(x, DistanceOptions::from(&plus)).unwrap().n),
     );
+    // The Hellinger distance (outdoor_hellinger's metric) on the same NDT
+    // histograms, with the roots taken once per descriptor.
+    g.bench_with_input(
+        BenchmarkId::new("delta_matrix_hellinger", n),
+        &ds,
+        |b, x| {
+            let o = DistanceOptions {
+                metric: placecat::descriptor::Metric::Hellinger,
+                ..DistanceOptions::from(&p)
+            };
+            let plain: Vec<Descriptor> = x
+                .iter()
+                .cloned()
+                .map(|mut d| {
+                    d.parts.clear();
+                    d
+                })
+                .collect();
+            b.iter(|| delta_matrix(&plain, o).unwrap().n)
+        },
+    );
     g.finish();
 }
 

@@ -47,6 +47,8 @@ if (ndtRows.length) {
   const paper = rows.find((r) => r.group === 'parts_distance' && r.func === 'delta_matrix_paper');
   const plus = rows.find((r) => r.group === 'parts_distance' && r.func === 'delta_matrix_indoor_plus');
   if (paper && plus) lines.push('', `Delta matrix of ${paper.param} scans (all cores): paper ${(paper.seconds * 1e3).toFixed(1)} ms, indoor_plus ${(plus.seconds * 1e3).toFixed(1)} ms (${(plus.seconds / paper.seconds).toFixed(2)}x).`);
+  const hellinger = rows.find((r) => r.group === 'parts_distance' && r.func === 'delta_matrix_hellinger');
+  if (paper && hellinger) lines.push('', `The same NDT histograms under the Hellinger distance (outdoor_hellinger's, docs/hellinger.md): ${(hellinger.seconds * 1e3).toFixed(1)} ms (${(hellinger.seconds / paper.seconds).toFixed(2)}x the paper's).`);
 }
 const time = (s) => (s < 1e-3 ? (s * 1e6).toFixed(1) + ' µs' : s < 1 ? (s * 1e3).toFixed(2) + ' ms' : s.toFixed(2) + ' s');
 const withBaseline = previous.size > 0;
