@@ -22,15 +22,17 @@ pub struct Prepared {
     /// padded with zeros to `stride` (a multiple of 4) rows: the Delta
     /// matrix's inner loop then runs on whole SIMD lanes and one allocation
     /// (measured: see [`delta_prepared`](super::delta_prepared)). Every metric gives the same
-    /// value with or without the zero rows, so this is the only copy.
+    /// value with or without the zero rows, so no unpadded copy is kept
+    /// (Hellinger keeps one more buffer, [`roots`](Self::roots)).
     pub padded: Vec<f32>,
     /// Rows of each padded column: `rows` rounded up to a multiple of 4.
     pub stride: usize,
     /// The square roots of `padded`, entry by entry, for the Hellinger
     /// metric only (else empty): taken once here rather than twice per
     /// entry and pair (the Delta matrix of 1,000 outdoor scans: 2.0 s of
-    /// CPU taking them in the kernel, see `distance/kernel.rs`). Centres
-    /// and reference scans are means and copies of `padded`, so it stays.
+    /// CPU taking them in the kernel, see `distance/kernel.rs`). `padded`
+    /// stays: centres are means of it and take their roots in the kernel
+    /// (the same value to the bit), and reference scans copy both.
     pub roots: Vec<f32>,
     /// Weight of Delta in the distance (1: the paper's).
     pub ndt_weight: f32,

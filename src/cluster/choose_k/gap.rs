@@ -91,4 +91,43 @@ mod tests {
         // Still rising at the end: the largest k tried.
         assert_eq!(one_se_choice(&[0.0, 0.5, 1.0], &[0.05; 3]), 3);
     }
+
+    /// A reference scan drawn from a Hellinger space carries the roots of
+    /// its own columns (copied with them), so its distances are those of
+    /// its normalised matrices.
+    #[test]
+    fn reference_scans_keep_their_roots_with_their_columns() {
+        use crate::descriptor::{Descriptor, Metric};
+        use crate::distance::DistanceOptions;
+        let scans: Vec<Descriptor> = (0..6u32)
+            .map(|i| Descriptor {
+                rows: 3,
+                cols: 4,
+                matrices: (0..1 + i as usize % 3)
+                    .map(|k| {
+                        (0..12)
+                            .map(|e| (e * 7 + i * 5 + k as u32 * 3) % 11)
+                            .collect()
+                    })
+                    .collect(),
+                summary: Default::default(),
+                parts: Vec::new(),
+            })
+            .collect();
+        let opts = DistanceOptions {
+            metric: Metric::Hellinger,
+            ..DistanceOptions::default()
+        };
+        let space = Space::new(&scans, opts).unwrap();
+        let drawn = reference(&space, 8, 3);
+        for item in &drawn.items {
+            let roots: Vec<f32> = item.padded.iter().map(|v| v.sqrt()).collect();
+            assert_eq!(item.roots, roots);
+        }
+        // And some column came from another scan than the item's first.
+        assert!(drawn
+            .items
+            .iter()
+            .any(|d| space.items.iter().all(|s| s.padded != d.padded)));
+    }
 }
