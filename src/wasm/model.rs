@@ -21,8 +21,8 @@ impl ClusterTree {
     /// splits at one height, the parent's first, which no threshold can
     /// separate). Fewer only when the tree has fewer than k leaves.
     #[wasm_bindgen(js_name = cutK, unchecked_return_type = "Cut")]
-    pub fn cut_k(&self, k: usize) -> WasmResult<JsValue> {
-        to_js(&self.tree.cut_k(k)?)
+    pub fn cut_k(&self, k: f64) -> WasmResult<JsValue> {
+        to_js(&self.tree.cut_k(set::count("k", k)?)?)
     }
     /// Number of categories at threshold t; throws for a threshold that
     /// is not a finite number >= 0, as `cut` does.

@@ -76,7 +76,7 @@ impl DescriptorSet {
     #[wasm_bindgen(unchecked_return_type = "KMeansResult")]
     pub fn kmeans(
         &mut self,
-        k: usize,
+        k: f64,
         #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
         seed: u32,
         restarts: Option<f64>,
@@ -84,16 +84,16 @@ impl DescriptorSet {
         to_js(
             &self
                 .set
-                .kmeans(&kmeans_params(k, seeding, seed, restarts)?)?,
+                .kmeans(&kmeans_params(count("k", k)?, seeding, seed, restarts)?)?,
         )
     }
     /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
     #[wasm_bindgen(unchecked_return_type = "KMedoidsResult")]
-    pub fn kmedoids(&mut self, k: usize, seed: u32) -> WasmResult<JsValue> {
+    pub fn kmedoids(&mut self, k: f64, seed: u32) -> WasmResult<JsValue> {
         to_js(
             &self
                 .set
-                .kmedoids(&KMedoidsParams::new(k).seed(seed.into()))?,
+                .kmedoids(&KMedoidsParams::new(count("k", k)?).seed(seed.into()))?,
         )
     }
     /// DBSCAN (Delta <= eps are neighbours; minPoints counts the scan itself).
@@ -101,8 +101,9 @@ impl DescriptorSet {
     pub fn dbscan(
         &mut self,
         eps: f32,
-        #[wasm_bindgen(js_name = minPoints)] min_points: usize,
+        #[wasm_bindgen(js_name = minPoints)] min_points: f64,
     ) -> WasmResult<js_sys::Int32Array> {
+        let min_points = count("minPoints", min_points)?;
         let labels = self.set.dbscan(&DbscanParams::new(eps, min_points))?;
         Ok(js_sys::Int32Array::from(&labels[..]))
     }
@@ -286,6 +287,23 @@ fn runs(restarts: Option<f64>) -> crate::Result<usize> {
         ))),
         Some(r) => Ok(r as usize),
     }
+}
+
+/// A count from JS (`k`, `minPoints`): a whole number, or an Error naming
+/// it (as a `usize` parameter, 2.5 would be taken as 2 and -1 as
+/// 4294967295 without a word). Its range is the core's check.
+pub(super) fn count(name: &str, v: f64) -> crate::Result<usize> {
+    if v.fract() != 0.0 || v.is_nan() || v < 0.0 {
+        return Err(Error::InvalidParameter(format!(
+            "{name} must be a whole number, got {v:?}"
+        )));
+    }
+    if v > u32::MAX as f64 {
+        return Err(Error::InvalidParameter(format!(
+            "{name} = {v:?} is more than any set holds"
+        )));
+    }
+    Ok(v as usize)
 }
 
 /// The k-means parameters of `kmeans` and `chooseK` (restarts: 1 unless given).

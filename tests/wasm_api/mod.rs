@@ -73,18 +73,20 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     // The two room scans are nearer each other than to the ouster scans.
     assert!(m[3 * 6 + 4] < m[3 * 6]);
     // Same labels as the core computes on the same bytes.
-    let km = set.kmeans(3, "stride", 1, None).unwrap();
+    let km = set.kmeans(3.0, "stride", 1, None).unwrap();
     let labels = labels_of(&km);
     assert_eq!(labels[0], labels[1]);
     assert_eq!(labels[3], labels[4]);
     let tree = set.hkmeans(2, None).unwrap();
     let linkage = tree.linkage().to_vec();
     assert_eq!(linkage.len(), 5 * 4);
-    let cut = tree.cut_k(3).unwrap();
+    let cut = tree.cut_k(3.0).unwrap();
+    let e = message(tree.cut_k(2.5).err().unwrap());
+    assert!(e.contains("k must be a whole number, got 2.5"), "{e}");
     assert_eq!(labels_of(&cut).len(), 6);
     assert_eq!(tree.count_at(tree.root_height()).unwrap(), 1);
     assert!(message(tree.count_at(f32::NAN).err().unwrap()).contains("threshold"));
-    let db = set.dbscan(0.5, 2).unwrap().to_vec();
+    let db = set.dbscan(0.5, 2.0).unwrap().to_vec();
     assert_eq!(db.len(), 6);
     // The choice of categories with its reference sets computed elsewhere
     // (another set of the same scans, in two shares, as the page's workers):
@@ -148,7 +150,7 @@ fn describe_real_bytes_and_cluster_through_the_api() {
             "{bad}: {e}"
         );
     }
-    let e = message(set.kmeans(3, "plusplus", 1, Some(2.5)).err().unwrap());
+    let e = message(set.kmeans(3.0, "plusplus", 1, Some(2.5)).err().unwrap());
     assert!(
         e.contains("restarts must be a whole number of runs from 1, got 2.5"),
         "{e}"
@@ -182,24 +184,24 @@ fn simulated_demo_model_round_trip_and_classify() {
         set.add_json(&d.descriptor_json().unwrap()).unwrap();
         scans.push(d);
     }
-    let km = set.kmeans(5, "plusplus", 1, None).unwrap();
+    let km = set.kmeans(5.0, "plusplus", 1, None).unwrap();
     // Restarts: run 0 is the single run, the cheapest of 10 is kept (and
     // the kept run's index comes back); stride restarts are refused.
-    let one = set.kmeans(5, "plusplus", 1, Some(1.0)).unwrap();
+    let one = set.kmeans(5.0, "plusplus", 1, Some(1.0)).unwrap();
     assert_eq!(labels_of(&one), labels_of(&km));
     assert_eq!(get(&one, "restart").as_f64(), Some(0.0));
-    let ten = set.kmeans(5, "plusplus", 1, Some(10.0)).unwrap();
+    let ten = set.kmeans(5.0, "plusplus", 1, Some(10.0)).unwrap();
     let cost = |v: &JsValue| get(v, "cost").as_f64().unwrap();
     // Measured (as `placecat cluster --restarts 10` on the same scans):
     // run 9 is kept, cost 0.7291 against the single run's 0.8646.
     assert_eq!(get(&ten, "restart").as_f64(), Some(9.0));
     assert!((cost(&km) - 0.8646).abs() < 1e-4, "{}", cost(&km));
     assert!((cost(&ten) - 0.7291).abs() < 1e-4, "{}", cost(&ten));
-    let e = message(set.kmeans(5, "stride", 1, Some(10.0)).err().unwrap());
+    let e = message(set.kmeans(5.0, "stride", 1, Some(10.0)).err().unwrap());
     assert!(e.contains("restarts = 10 with stride"), "{e}");
     // A huge count is an Error, not a trap (it used to run out of memory).
     let e = message(
-        set.kmeans(5, "plusplus", 1, Some(u32::MAX as f64))
+        set.kmeans(5.0, "plusplus", 1, Some(u32::MAX as f64))
             .err()
             .unwrap(),
     );
@@ -223,7 +225,7 @@ fn simulated_demo_model_round_trip_and_classify() {
     for p in sweep.iter() {
         let e = get(&p, "epsilon").as_f64().unwrap() as f32;
         let c = get(&p, "min_points").as_f64().unwrap() as usize;
-        let db = set.dbscan(e, c).unwrap().to_vec();
+        let db = set.dbscan(e, c as f64).unwrap().to_vec();
         let ev = DescriptorSet::evaluate(truth.clone(), &db).unwrap();
         assert_eq!(get(&p, "score").as_f64(), get(&ev, "score").as_f64());
         let clusters = db.iter().copied().max().unwrap_or(-1) + 1;
@@ -307,10 +309,22 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     let cut = json.replacen(",0,", ",", 1);
     let e = message(set.add_json(&cut).err().unwrap());
     assert!(e.contains("rows x cols = 11 x 7"), "{e}");
-    let e = message(set.kmeans(0, "stride", 0, None).err().unwrap());
+    let e = message(set.kmeans(0.0, "stride", 0, None).err().unwrap());
     assert!(e.contains("k must be at least 1"), "{e}");
-    assert!(message(set.kmeans(2, "sideways", 0, None).err().unwrap()).contains("sideways"));
-    assert!(message(set.dbscan(-1.0, 2).err().unwrap()).contains("epsilon"));
+    assert!(message(set.kmeans(2.0, "sideways", 0, None).err().unwrap()).contains("sideways"));
+    // Counts are whole numbers: 2.5 is not taken as 2, nor -1 as 4294967295.
+    let e = message(set.kmeans(2.5, "stride", 0, None).err().unwrap());
+    assert!(e.contains("k must be a whole number, got 2.5"), "{e}");
+    let e = message(set.kmedoids(-1.0, 0).err().unwrap());
+    assert!(e.contains("k must be a whole number, got -1.0"), "{e}");
+    let e = message(set.dbscan(0.5, 1.5).err().unwrap());
+    assert!(
+        e.contains("minPoints must be a whole number, got 1.5"),
+        "{e}"
+    );
+    let e = message(set.kmeans(1e300, "stride", 0, None).err().unwrap());
+    assert!(e.contains("k = 1e300 is more than any set holds"), "{e}");
+    assert!(message(set.dbscan(-1.0, 2.0).err().unwrap()).contains("epsilon"));
     assert!(message(set.dbscan_sweep(&[], &[2], None).err().unwrap()).contains("at least one"));
     assert!(message(
         set.dbscan_sweep(&[0.5], &[2], Some(vec!["a".into()]))
@@ -328,7 +342,7 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(e.contains("few") && e.contains("one, many"), "{e}");
     // Still usable after the errors.
     assert_eq!(
-        labels_of(&set.kmeans(2, "stride", 0, None).unwrap()).len(),
+        labels_of(&set.kmeans(2.0, "stride", 0, None).unwrap()).len(),
         6
     );
 }
