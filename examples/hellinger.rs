@@ -20,13 +20,10 @@
 //! tree, as the page's first cut does. The test run refuses to overwrite
 //! its report.
 
-use placecat::cluster::choose_k::{choose_k, ChooseKParams, Clusterer, DEFAULT_RULE};
-use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
 use placecat::descriptor::Metric;
-use placecat::eval::evaluate;
 use placecat::sim::sites::{OUTDOOR_KINDS, WAREHOUSE_KINDS};
-use placecat::sim::{SceneKind, SimParams, Simulation};
+use placecat::sim::SceneKind;
 use placecat::*;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -41,6 +38,9 @@ mod real;
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
+#[path = "common/site_rounds.rs"]
+mod site_rounds;
+use site_rounds::*;
 
 /// Fixed in docs/seeds.md ("issue 18, sixth round", "issue 14, sixth
 /// round") before any run.
@@ -80,13 +80,6 @@ struct FamilySet {
     presets: Vec<(String, Pair)>,
 }
 
-/// The default rule's choice on one tree: K and the accuracy at it.
-#[derive(Serialize, Deserialize, Clone, Copy)]
-struct Chosen {
-    k: usize,
-    accuracy: f64,
-}
-
 #[derive(Serialize, Deserialize, Clone)]
 struct SiteSet {
     site: String,
@@ -98,12 +91,7 @@ struct SiteSet {
     chosen_hellinger: Vec<Chosen>,
 }
 
-#[derive(Serialize, Deserialize, Default)]
-struct Part {
-    families: Vec<FamilySet>,
-    sites: Vec<SiteSet>,
-    seconds: f64,
-}
+type Part = site_rounds::Part<FamilySet, SiteSet>;
 
 /// Same-place retrieval on the real scans (tests/data/real/groups.csv):
 /// how many find a scan of their own place as their nearest other scan.
@@ -200,22 +188,6 @@ fn with_hellinger(p: &DescriptorParams) -> DescriptorParams {
     }
 }
 
-/// Trees of tree seeds 0-9, each with the parameters it was built with.
-type Trees = Vec<(HkMeansParams, Tree)>;
-
-/// Trees of tree seeds 0-9 with ten trial splits per node.
-fn trees(space: &Space, m: &DistanceMatrix) -> Res<Trees> {
-    (0..CLUSTER_SEEDS)
-        .into_par_iter()
-        .map(|s| {
-            let params = HkMeansParams::new(s).restarts(TRIALS);
-            let tree = HierarchicalKMeans::fit(space, m, &params)?;
-            Ok((params, tree))
-        })
-        .collect::<placecat::Result<_>>()
-        .map_err(Into::into)
-}
-
 /// The three clusterings of `ds` under `params`' distance at `k`, and the
 /// trees (with the space and its matrix) for other cuts.
 fn measure(
@@ -227,7 +199,7 @@ fn measure(
     let space = Space::new(ds, DistanceOptions::from(params))?;
     let m = space.matrix();
     let stride = KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?.labels;
-    let ten = trees(&space, &m)?;
+    let ten = trees(&space, &m, TRIALS)?;
     let figures = Figures {
         stride: once(truth, &stride)?,
         best_of_10: over_seeds(truth, |s| {
@@ -260,85 +232,22 @@ fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<
     })
 }
 
-/// The default rule's K on each tree, and the accuracy at it.
-fn choices(
-    space: &Space,
-    m: &DistanceMatrix,
-    trees: &[(HkMeansParams, Tree)],
-    truth: &[String],
-) -> Res<Vec<Chosen>> {
-    trees
-        .par_iter()
-        .map(|(p, tree)| {
-            let c = choose_k(
-                space,
-                Some(m),
-                Clusterer::Tree(tree, p),
-                &ChooseKParams::default(),
-                DEFAULT_RULE,
-            )?;
-            let accuracy = evaluate(truth, &tree.cut_k(c.k)?.labels)?.accuracy;
-            Ok(Chosen { k: c.k, accuracy })
-        })
-        .collect::<placecat::Result<_>>()
-        .map_err(Into::into)
-}
-
 /// `placecat simulate --scene S --seed N` with the scene's paper preset
 /// (as examples/common/sites.rs), clustered into 3, and each tree's choice.
 fn site_set(scene: SceneKind, seed: u64) -> Res<SiteSet> {
-    let params = if scene == SceneKind::Outdoor {
-        DescriptorParams::outdoor()
-    } else {
-        DescriptorParams::indoor()
-    };
-    let sim = Simulation::new(&SimParams::new(scene, seed))?;
-    let ds: Vec<Descriptor> = (0..sim.len())
-        .into_par_iter()
-        .map(|i| describe(&sim.scan(i).points, &params))
-        .collect::<placecat::Result<_>>()?;
-    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
-    let (own, space, m, own_trees) = measure(&ds, &params, &truth, 3)?;
-    let chosen = choices(&space, &m, &own_trees, &truth)?;
-    let (hellinger, space, m, h_trees) = measure(&ds, &with_hellinger(&params), &truth, 3)?;
-    let chosen_hellinger = choices(&space, &m, &h_trees, &truth)?;
+    let site = site(scene, seed)?;
+    let (ds, truth) = (&site.descriptors, &site.truth);
+    let (own, space, m, own_trees) = measure(ds, &site.params, truth, 3)?;
+    let chosen = choices(&space, &m, &own_trees, truth)?;
+    let (hellinger, space, m, h_trees) = measure(ds, &with_hellinger(&site.params), truth, 3)?;
+    let chosen_hellinger = choices(&space, &m, &h_trees, truth)?;
     Ok(SiteSet {
-        site: if scene == SceneKind::Outdoor {
-            "outdoor"
-        } else {
-            "warehouse"
-        }
-        .into(),
+        site: site.name.into(),
         seed,
-        scans: sim.len(),
+        scans: truth.len(),
         figures: Pair { own, hellinger },
         chosen,
         chosen_hellinger,
-    })
-}
-
-fn run(
-    presets: &[(String, Vec<String>)],
-    family_seeds: &[u64],
-    site_seeds: &[u64],
-    what: &str,
-) -> Res<Part> {
-    let t0 = std::time::Instant::now();
-    let mut sites = vec![];
-    for scene in [SceneKind::Outdoor, SceneKind::Warehouse] {
-        for &seed in site_seeds {
-            eprintln!(
-                "{what} site {scene:?} seed {seed} ({:.0} s)",
-                t0.elapsed().as_secs_f64()
-            );
-            sites.push(site_set(scene, seed)?);
-        }
-    }
-    let (families, _) = every_set(presets, family_seeds, what, family_set)?;
-    Ok(Part {
-        families,
-        sites,
-        seconds: t0.elapsed().as_secs_f64(),
     })
 }
 
@@ -390,17 +299,6 @@ fn family_table(
             Ok(())
         },
     )
-}
-
-/// K chosen over the trees, e.g. "2x1 3x9".
-fn ks(c: &[Chosen]) -> String {
-    let mut k: Vec<usize> = c.iter().map(|c| c.k).collect();
-    k.sort();
-    let mut out = vec![];
-    for v in k.chunk_by(|a, b| a == b) {
-        out.push(format!("{}x{}", v[0], v.len()));
-    }
-    out.join(" ")
 }
 
 fn site_table(o: &mut String, sites: &[SiteSet]) -> Res<()> {
@@ -517,7 +415,7 @@ fn main() -> Res<()> {
     // names would show here, not as a silent 0 %).
     assert_eq!((OUTDOOR_KINDS.len(), WAREHOUSE_KINDS.len()), (3, 3));
     if has("--dev") {
-        let dev = run(&presets, FAMILY_DEV, SITE_DEV, "dev")?;
+        let dev = site_rounds::run(&presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set)?;
         let r = Report {
             presets,
             dev,
@@ -540,7 +438,14 @@ fn main() -> Res<()> {
     }
     let dev: Report =
         read_json(&docs.join(DEV_FILE)).map_err(|e| format!("{e} (run with --dev first)"))?;
-    let test = run(&presets, FAMILY_TEST, SITE_TEST, "test")?;
+    let test = site_rounds::run(
+        &presets,
+        FAMILY_TEST,
+        SITE_TEST,
+        "test",
+        site_set,
+        family_set,
+    )?;
     let real = real_rows(&presets)?;
     let r = Report {
         presets,

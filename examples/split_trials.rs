@@ -18,14 +18,11 @@
 //! of categories the default rule chooses for each tree, as the page's
 //! first cut does. The test run refuses to overwrite its report.
 
-use placecat::cluster::choose_k::{choose_k, ChooseKParams, Clusterer, DEFAULT_RULE};
 use placecat::cluster::hkmeans::HkMeansParams;
 use placecat::cluster::*;
-use placecat::eval::evaluate;
 use placecat::sim::sites::{OUTDOOR_KINDS, WAREHOUSE_KINDS};
-use placecat::sim::{SceneKind, SimParams, Simulation};
+use placecat::sim::SceneKind;
 use placecat::*;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
@@ -36,6 +33,9 @@ use families::*;
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
+#[path = "common/site_rounds.rs"]
+mod site_rounds;
+use site_rounds::*;
 
 /// Fixed in docs/seeds.md ("issue 18, fifth round", "issue 14, fifth
 /// round") before any run.
@@ -69,13 +69,6 @@ struct FamilySet {
     presets: Vec<(String, Figures)>,
 }
 
-/// The default rule's choice on one tree: K and the accuracy at it.
-#[derive(Serialize, Deserialize, Clone, Copy)]
-struct Chosen {
-    k: usize,
-    accuracy: f64,
-}
-
 #[derive(Serialize, Deserialize, Clone)]
 struct SiteSet {
     site: String,
@@ -87,34 +80,13 @@ struct SiteSet {
     chosen_trials: Vec<Chosen>,
 }
 
-#[derive(Serialize, Deserialize, Default)]
-struct Part {
-    families: Vec<FamilySet>,
-    sites: Vec<SiteSet>,
-    seconds: f64,
-}
+type Part = site_rounds::Part<FamilySet, SiteSet>;
 
 #[derive(Serialize, Deserialize)]
 struct Report {
     presets: Vec<(String, Vec<String>)>,
     dev: Part,
     test: Part,
-}
-
-/// Trees of tree seeds 0-9, each with the parameters it was built with.
-type Trees = Vec<(HkMeansParams, Tree)>;
-
-/// Trees of tree seeds 0-9 with `trials` splits per node.
-fn trees(space: &Space, m: &DistanceMatrix, trials: usize) -> Res<Trees> {
-    (0..CLUSTER_SEEDS)
-        .into_par_iter()
-        .map(|s| {
-            let params = HkMeansParams::new(s).restarts(trials);
-            let tree = HierarchicalKMeans::fit(space, m, &params)?;
-            Ok((params, tree))
-        })
-        .collect::<placecat::Result<_>>()
-        .map_err(Into::into)
 }
 
 /// `m`: the space's Delta matrix (the caller's, so it is computed once).
@@ -162,73 +134,17 @@ fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<
 /// `placecat simulate --scene S --seed N` with the site's preset (as
 /// examples/common/sites.rs), clustered into 3, and each tree's choice.
 fn site_set(scene: SceneKind, seed: u64) -> Res<SiteSet> {
-    let params = if scene == SceneKind::Outdoor {
-        DescriptorParams::outdoor()
-    } else {
-        DescriptorParams::indoor()
-    };
-    let sim = Simulation::new(&SimParams::new(scene, seed))?;
-    let ds: Vec<Descriptor> = (0..sim.len())
-        .into_par_iter()
-        .map(|i| describe(&sim.scan(i).points, &params))
-        .collect::<placecat::Result<_>>()?;
-    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
-    let space = Space::new(&ds, DistanceOptions::from(&params))?;
+    let site = site(scene, seed)?;
+    let space = Space::new(&site.descriptors, DistanceOptions::from(&site.params))?;
     let m = space.matrix();
-    let (figures, [one, ten]) = measure(&space, &m, &truth, 3)?;
-    let choose = |t: &[(HkMeansParams, Tree)]| -> Res<Vec<Chosen>> {
-        t.par_iter()
-            .map(|(p, tree)| {
-                let c = choose_k(
-                    &space,
-                    Some(&m),
-                    Clusterer::Tree(tree, p),
-                    &ChooseKParams::default(),
-                    DEFAULT_RULE,
-                )?;
-                let accuracy = evaluate(&truth, &tree.cut_k(c.k)?.labels)?.accuracy;
-                Ok(Chosen { k: c.k, accuracy })
-            })
-            .collect::<placecat::Result<_>>()
-            .map_err(Into::into)
-    };
+    let (figures, [one, ten]) = measure(&space, &m, &site.truth, 3)?;
     Ok(SiteSet {
-        site: if scene == SceneKind::Outdoor {
-            "outdoor"
-        } else {
-            "warehouse"
-        }
-        .into(),
+        site: site.name.into(),
         seed,
-        scans: sim.len(),
+        scans: site.truth.len(),
         figures,
-        chosen: choose(&one)?,
-        chosen_trials: choose(&ten)?,
-    })
-}
-
-fn run(
-    presets: &[(String, Vec<String>)],
-    family_seeds: &[u64],
-    site_seeds: &[u64],
-    what: &str,
-) -> Res<Part> {
-    let t0 = std::time::Instant::now();
-    let mut sites = vec![];
-    for scene in [SceneKind::Outdoor, SceneKind::Warehouse] {
-        for &seed in site_seeds {
-            eprintln!(
-                "{what} site {scene:?} seed {seed} ({:.0} s)",
-                t0.elapsed().as_secs_f64()
-            );
-            sites.push(site_set(scene, seed)?);
-        }
-    }
-    let (families, _) = every_set(presets, family_seeds, what, family_set)?;
-    Ok(Part {
-        families,
-        sites,
-        seconds: t0.elapsed().as_secs_f64(),
+        chosen: choices(&space, &m, &one, &site.truth)?,
+        chosen_trials: choices(&space, &m, &ten, &site.truth)?,
     })
 }
 
@@ -267,17 +183,6 @@ fn family_table(
             Ok(())
         },
     )
-}
-
-/// K chosen over the trees, e.g. "2x1 3x9".
-fn ks(c: &[Chosen]) -> String {
-    let mut k: Vec<usize> = c.iter().map(|c| c.k).collect();
-    k.sort();
-    let mut out = vec![];
-    for v in k.chunk_by(|a, b| a == b) {
-        out.push(format!("{}x{}", v[0], v.len()));
-    }
-    out.join(" ")
 }
 
 fn site_table(o: &mut String, sites: &[SiteSet]) -> Res<()> {
@@ -385,7 +290,7 @@ fn main() -> Res<()> {
     // names would show here, not as a silent 0 %).
     assert_eq!((OUTDOOR_KINDS.len(), WAREHOUSE_KINDS.len()), (3, 3));
     if has("--dev") {
-        let dev = run(&presets, FAMILY_DEV, SITE_DEV, "dev")?;
+        let dev = site_rounds::run(&presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set)?;
         let r = Report {
             presets,
             dev,
@@ -407,7 +312,14 @@ fn main() -> Res<()> {
     }
     let dev: Report =
         read_json(&docs.join(DEV_FILE)).map_err(|e| format!("{e} (run with --dev first)"))?;
-    let test = run(&presets, FAMILY_TEST, SITE_TEST, "test")?;
+    let test = site_rounds::run(
+        &presets,
+        FAMILY_TEST,
+        SITE_TEST,
+        "test",
+        site_set,
+        family_set,
+    )?;
     let r = Report {
         presets,
         dev: dev.dev,

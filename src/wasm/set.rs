@@ -274,18 +274,36 @@ fn tree_params(seed: u32, restarts: Option<f64>) -> crate::Result<HkMeansParams>
 /// (as a `u32` parameter, 2.5 would be taken as 2 and -1 as 4294967295
 /// without a word). Its range (1 to 1000) is the core's check.
 fn runs(restarts: Option<f64>) -> crate::Result<usize> {
-    match restarts {
+    match restarts.map(whole) {
         None => Ok(1),
+        Some(Ok(r)) => Ok(r),
         // {r:?}: 1e300 and NaN print as such, not as 300 digits.
-        Some(r) if r.fract() != 0.0 || r.is_nan() || r < 0.0 => Err(Error::InvalidParameter(
-            format!("restarts must be a whole number of runs from 1, got {r:?}"),
-        )),
-        // Above any count the core takes (and above usize on wasm32).
-        Some(r) if r > u32::MAX as f64 => Err(Error::InvalidParameter(format!(
+        Some(Err(NotWhole::Fraction(r))) => Err(Error::InvalidParameter(format!(
+            "restarts must be a whole number of runs from 1, got {r:?}"
+        ))),
+        Some(Err(NotWhole::TooLarge(r))) => Err(Error::InvalidParameter(format!(
             "restarts = {r:?} is more than the limit of {} runs",
             crate::cluster::MAX_RESTARTS
         ))),
-        Some(r) => Ok(r as usize),
+    }
+}
+
+/// Why a JS number is not a count.
+enum NotWhole {
+    /// A fraction, negative or NaN.
+    Fraction(f64),
+    /// Above any count the core takes (and above usize on wasm32).
+    TooLarge(f64),
+}
+
+/// A JS number as a count: a whole number from 0 to u32::MAX.
+fn whole(v: f64) -> Result<usize, NotWhole> {
+    if v.fract() != 0.0 || v.is_nan() || v < 0.0 {
+        Err(NotWhole::Fraction(v))
+    } else if v > u32::MAX as f64 {
+        Err(NotWhole::TooLarge(v))
+    } else {
+        Ok(v as usize)
     }
 }
 
@@ -293,17 +311,12 @@ fn runs(restarts: Option<f64>) -> crate::Result<usize> {
 /// it (as a `usize` parameter, 2.5 would be taken as 2 and -1 as
 /// 4294967295 without a word). Its range is the core's check.
 pub(super) fn count(name: &str, v: f64) -> crate::Result<usize> {
-    if v.fract() != 0.0 || v.is_nan() || v < 0.0 {
-        return Err(Error::InvalidParameter(format!(
-            "{name} must be a whole number, got {v:?}"
-        )));
-    }
-    if v > u32::MAX as f64 {
-        return Err(Error::InvalidParameter(format!(
-            "{name} = {v:?} is more than any set holds"
-        )));
-    }
-    Ok(v as usize)
+    whole(v).map_err(|e| {
+        Error::InvalidParameter(match e {
+            NotWhole::Fraction(v) => format!("{name} must be a whole number, got {v:?}"),
+            NotWhole::TooLarge(v) => format!("{name} = {v:?} is more than any set holds"),
+        })
+    })
 }
 
 /// The k-means parameters of `kmeans` and `chooseK` (restarts: 1 unless given).

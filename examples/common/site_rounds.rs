@@ -1,0 +1,153 @@
+//! What the rounds that judge issue 14's sites beside issue 18's families
+//! share (round 5, `split_trials.rs`; round 6, `hellinger.rs`): a site
+//! simulated and described with its scene's paper preset, trees of tree
+//! seeds 0-9, the default rule's choice on each, and one part of a run
+//! (sites, then families). Include after `families.rs` and `rounds.rs`.
+
+use crate::families::{Family, Sensor};
+use crate::rounds::{every_set, Res, CLUSTER_SEEDS};
+use placecat::cluster::choose_k::{choose_k, ChooseKParams, Clusterer, DEFAULT_RULE};
+use placecat::cluster::hkmeans::HkMeansParams;
+use placecat::cluster::*;
+use placecat::eval::evaluate;
+use placecat::sim::{SceneKind, SimParams, Simulation};
+use placecat::*;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+/// Trees of tree seeds 0-9, each with the parameters it was built with.
+pub type Trees = Vec<(HkMeansParams, Tree)>;
+
+/// Trees of tree seeds 0-9 with `trials` splits per node; `m` is the
+/// space's Delta matrix (the caller's, so it is computed once).
+pub fn trees(space: &Space, m: &DistanceMatrix, trials: usize) -> Res<Trees> {
+    (0..CLUSTER_SEEDS)
+        .into_par_iter()
+        .map(|s| {
+            let params = HkMeansParams::new(s).restarts(trials);
+            let tree = HierarchicalKMeans::fit(space, m, &params)?;
+            Ok((params, tree))
+        })
+        .collect::<placecat::Result<_>>()
+        .map_err(Into::into)
+}
+
+/// The default rule's choice on one tree: K and the accuracy at it.
+#[derive(Serialize, Deserialize, Clone, Copy)]
+pub struct Chosen {
+    pub k: usize,
+    pub accuracy: f64,
+}
+
+/// The default rule's K on each tree, and the accuracy at it, as the
+/// page's first cut.
+pub fn choices(
+    space: &Space,
+    m: &DistanceMatrix,
+    trees: &[(HkMeansParams, Tree)],
+    truth: &[String],
+) -> Res<Vec<Chosen>> {
+    trees
+        .par_iter()
+        .map(|(p, tree)| {
+            let c = choose_k(
+                space,
+                Some(m),
+                Clusterer::Tree(tree, p),
+                &ChooseKParams::default(),
+                DEFAULT_RULE,
+            )?;
+            let accuracy = evaluate(truth, &tree.cut_k(c.k)?.labels)?.accuracy;
+            Ok(Chosen { k: c.k, accuracy })
+        })
+        .collect::<placecat::Result<_>>()
+        .map_err(Into::into)
+}
+
+/// K chosen over the trees, e.g. "2x1 3x9".
+pub fn ks(c: &[Chosen]) -> String {
+    let mut k: Vec<usize> = c.iter().map(|c| c.k).collect();
+    k.sort();
+    let mut out = vec![];
+    for v in k.chunk_by(|a, b| a == b) {
+        out.push(format!("{}x{}", v[0], v.len()));
+    }
+    out.join(" ")
+}
+
+/// A site as `placecat simulate --scene S --seed N` makes it, described
+/// with the scene's paper preset (as examples/common/sites.rs).
+pub struct Site {
+    pub name: &'static str,
+    pub params: DescriptorParams,
+    pub truth: Vec<String>,
+    pub descriptors: Vec<Descriptor>,
+}
+
+pub fn site(scene: SceneKind, seed: u64) -> Res<Site> {
+    let (name, params) = if scene == SceneKind::Outdoor {
+        ("outdoor", DescriptorParams::outdoor())
+    } else {
+        ("warehouse", DescriptorParams::indoor())
+    };
+    let sim = Simulation::new(&SimParams::new(scene, seed))?;
+    let descriptors: Vec<Descriptor> = (0..sim.len())
+        .into_par_iter()
+        .map(|i| describe(&sim.scan(i).points, &params))
+        .collect::<placecat::Result<_>>()?;
+    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
+    Ok(Site {
+        name,
+        params,
+        truth,
+        descriptors,
+    })
+}
+
+/// One part of a round (development or test seeds): the sites, then the
+/// families, and the seconds it took.
+#[derive(Serialize, Deserialize)]
+pub struct Part<F, S> {
+    pub families: Vec<F>,
+    pub sites: Vec<S>,
+    pub seconds: f64,
+}
+
+impl<F, S> Default for Part<F, S> {
+    fn default() -> Self {
+        Part {
+            families: vec![],
+            sites: vec![],
+            seconds: 0.0,
+        }
+    }
+}
+
+/// Every site seed of both sites with `site_set`, then every family set
+/// with `family_set`.
+pub fn run<F, S>(
+    presets: &[(String, Vec<String>)],
+    family_seeds: &[u64],
+    site_seeds: &[u64],
+    what: &str,
+    mut site_set: impl FnMut(SceneKind, u64) -> Res<S>,
+    family_set: impl FnMut(&Family, Sensor, u64, &[String]) -> Res<F>,
+) -> Res<Part<F, S>> {
+    let t0 = std::time::Instant::now();
+    let mut sites = vec![];
+    for scene in [SceneKind::Outdoor, SceneKind::Warehouse] {
+        for &seed in site_seeds {
+            eprintln!(
+                "{what} site {scene:?} seed {seed} ({:.0} s)",
+                t0.elapsed().as_secs_f64()
+            );
+            sites.push(site_set(scene, seed)?);
+        }
+    }
+    let (families, _) = every_set(presets, family_seeds, what, family_set)?;
+    Ok(Part {
+        families,
+        sites,
+        seconds: t0.elapsed().as_secs_f64(),
+    })
+}
