@@ -46,6 +46,14 @@ export class View {
    */
   render(s, preset, delta) {
     this.s = s;
+    // Every clustering numbers its categories afresh, so a highlight of the
+    // last one is forgotten (the map and dendrogram redraw below): a legend
+    // row replaced under the pointer fires no mouseleave, and a pointer at
+    // rest on the dendrogram would keep greying the scans of a category
+    // that is now another. The next pointer move highlights again.
+    this.hovered = undefined;
+    $('tooltip').hidden = true;
+    this.map.highlight = this.dendrogram.highlight = -1;
     const n = s.scans.length;
     const sg = s.suggestion;
     $('preset-note').textContent = sg ? suggestionText(sg) + (sg.preset !== preset ? `; described with ${preset} (${s.demo ? "the demo's" : 'as chosen'})` : '.') : '';

@@ -193,13 +193,17 @@ test('the categories CSV survives its own import: export, import, export give th
 
 test('KITTI scans with a poses file draw a trajectory map', async () => {
   const dir = join(REAL, 'kitti00');
+  // The pointer rests where the last test clicked (Export CSV, under the
+  // legend), and the new run's shorter page moves other things under it. A
+  // category highlighted by hovering (a legend row, the dendrogram) greys
+  // the others on the map; once in CI the first category's colour was gone
+  // from it (not reproduced here; a highlight is the only way it can go).
+  // Parked in the page's corner, the pointer is over nothing that highlights.
+  await h.page.mouse.move(1, 1);
   await afterRun(h.page, () => h.page.setInputFiles('#files', ['000094.bin', '000095.bin', '000198.bin', '000199.bin', 'poses.txt'].map((f) => join(dir, f))));
   assert.match(await h.page.textContent('#map-caption'), /Trajectory map/);
   assert.ok((await inkedPixels(h.page, 'map')) > 2000);
   // Click the first scan on the map (leftmost-bottom of the fitted path): its name shows.
-  // In view first: the tests before may leave the page scrolled past the map's top.
-  await h.page.locator('#map').scrollIntoViewIfNeeded();
-  const box = await h.page.locator('#map').boundingBox();
   const hit = await h.page.evaluate(() => {
     const c = document.getElementById('map');
     const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
@@ -207,7 +211,18 @@ test('KITTI scans with a poses file draw a trajectory map', async () => {
     for (let i = 0; i < d.length; i += 4) if (d[i + 3] === 255 && d[i] === 0x4e && d[i + 1] === 0x79) return [(i / 4) % c.width, Math.floor(i / 4 / c.width), c.width, c.height];
     return null;
   });
-  assert.ok(hit, 'a scan marker in the first category colour');
+  const seen = async () => h.page.evaluate(() => {
+    const c = /** @type {HTMLCanvasElement} */ (document.getElementById('map'));
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const opaque = new Set();
+    for (let i = 0; i < d.length; i += 4) if (d[i + 3] === 255) opaque.add(((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]).toString(16));
+    return `opaque colours ${[...opaque].slice(0, 8)}; legend highlight ${document.querySelector('#legend li.hl')?.dataset.category ?? 'none'}; ${document.getElementById('cluster-status').textContent}`;
+  });
+  assert.ok(hit, `a scan marker in the first category colour (${hit ? '' : await seen()})`);
+  // In view next (the scroll may move the page under the parked pointer; the
+  // pixels are read): the tests before may leave the page scrolled past the map's top.
+  await h.page.locator('#map').scrollIntoViewIfNeeded();
+  const box = await h.page.locator('#map').boundingBox();
   await h.page.mouse.click(box.x + ((hit[0] + 2) / hit[2]) * box.width, box.y + ((hit[1] + 2) / hit[3]) * box.height);
   assert.match(await h.page.textContent('#info'), /0001?9[459]\.bin: /);
   await h.page.screenshot({ path: join(ARTIFACTS, 'kitti-map.png') });
