@@ -138,7 +138,7 @@ export class Engine {
   hkmeans(seed, restarts = 1) {
     checkRuns(restarts);
     this.tree.clear();
-    this.tree.set(this.set.get('scans').hkmeans(seed >>> 0, restarts));
+    this.tree.set(this.set.get('scans').hkmeans(seed, restarts));
     const tree = this.tree.get('tree');
     return { nodes: tree.nodes(), rootHeight: tree.rootHeight(), restarts };
   }
@@ -207,7 +207,7 @@ export class Engine {
    */
   kmeans(k, seeding, seed, restarts = 1) {
     checkRuns(restarts);
-    return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed >>> 0, restarts).labels);
+    return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed, restarts).labels);
   }
 
   /** @param {number} eps @param {number} minPoints @returns {Int32Array} */
@@ -346,7 +346,7 @@ export class Describer {
    */
   referenceDispersions(key, params, descriptorJsons, seed, which, restarts = 1) {
     checkRuns(restarts);
-    return this.#keepTail(this.tailSet(key, params, descriptorJsons).referenceDispersions(seed >>> 0, Uint32Array.from(which), restarts));
+    return this.#keepTail(this.tailSet(key, params, descriptorJsons).referenceDispersions(seed, Uint32Array.from(which), restarts));
   }
 
   /**

@@ -78,7 +78,7 @@ impl DescriptorSet {
         &mut self,
         k: f64,
         #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
-        seed: u32,
+        seed: f64,
         restarts: Option<f64>,
     ) -> WasmResult<JsValue> {
         to_js(
@@ -89,11 +89,11 @@ impl DescriptorSet {
     }
     /// k-medoids on the Delta matrix. Returns `{labels, medoids}`.
     #[wasm_bindgen(unchecked_return_type = "KMedoidsResult")]
-    pub fn kmedoids(&mut self, k: f64, seed: u32) -> WasmResult<JsValue> {
+    pub fn kmedoids(&mut self, k: f64, seed: f64) -> WasmResult<JsValue> {
         to_js(
             &self
                 .set
-                .kmedoids(&KMedoidsParams::new(count("k", k)?).seed(seed.into()))?,
+                .kmedoids(&KMedoidsParams::new(count("k", k)?).seed(seed_of(seed)?))?,
         )
     }
     /// DBSCAN (Delta <= eps are neighbours; minPoints counts the scan itself).
@@ -137,7 +137,7 @@ impl DescriptorSet {
     /// bound of the diameter. `restarts`: 2-means++ trials at every split,
     /// the cheapest kept (default 1, the paper's tree; a whole number up to
     /// 1000).
-    pub fn hkmeans(&mut self, seed: u32, restarts: Option<f64>) -> WasmResult<ClusterTree> {
+    pub fn hkmeans(&mut self, seed: f64, restarts: Option<f64>) -> WasmResult<ClusterTree> {
         let params = tree_params(seed, restarts)?;
         Ok(ClusterTree {
             tree: self.set.hkmeans(&params)?,
@@ -162,7 +162,7 @@ impl DescriptorSet {
     #[wasm_bindgen(js_name = referenceDispersions)]
     pub fn reference_dispersions(
         &mut self,
-        seed: u32,
+        seed: f64,
         which: &[u32],
         restarts: Option<f64>,
     ) -> WasmResult<js_sys::Float64Array> {
@@ -189,15 +189,15 @@ impl DescriptorSet {
         &mut self,
         tree: &ClusterTree,
         dispersions: &[f64],
-        seed: u32,
+        seed: f64,
         restarts: Option<f64>,
     ) -> WasmResult<JsValue> {
         let drawn = tree_params(seed, restarts)?;
         if drawn != tree.params {
             return Err(Error::Mismatch(format!(
-                "reference sets drawn for a tree of seed {seed}, restarts {}; this tree's: \
+                "reference sets drawn for a tree of seed {}, restarts {}; this tree's: \
                  seed {}, restarts {}",
-                drawn.restarts, tree.params.seed, tree.params.restarts
+                drawn.seed, drawn.restarts, tree.params.seed, tree.params.restarts
             ))
             .into());
         }
@@ -214,7 +214,7 @@ impl DescriptorSet {
     pub fn choose_k(
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Seeding")] seeding: &str,
-        seed: u32,
+        seed: f64,
         restarts: Option<f64>,
     ) -> WasmResult<JsValue> {
         let params = kmeans_params(1, seeding, seed, restarts)?;
@@ -266,8 +266,8 @@ impl DescriptorSet {
 /// `restarts` (1 unless given): the same for the page's tree (`hkmeans`)
 /// and for the reference sets of its choice (`referenceDispersions`), which
 /// must be built alike. The count's range is checked where the tree is built.
-fn tree_params(seed: u32, restarts: Option<f64>) -> crate::Result<HkMeansParams> {
-    Ok(HkMeansParams::new(seed.into()).restarts(runs(restarts)?))
+fn tree_params(seed: f64, restarts: Option<f64>) -> crate::Result<HkMeansParams> {
+    Ok(HkMeansParams::new(seed_of(seed)?).restarts(runs(restarts)?))
 }
 
 /// A count of runs from JS: 1 unless given; a whole number, or an Error
@@ -319,15 +319,32 @@ pub(super) fn count(name: &str, v: f64) -> crate::Result<usize> {
     })
 }
 
+/// The largest whole number a JS number holds exactly (2^53 - 1,
+/// `Number.MAX_SAFE_INTEGER`).
+const MAX_SAFE_INTEGER: f64 = 9_007_199_254_740_991.0;
+
+/// A seed from JS: a whole number from 0 to `Number.MAX_SAFE_INTEGER`, the
+/// CLI's `--seed` for the same number, or an Error (as a `u32` parameter,
+/// 2.5 would be taken as 2, -1 as 4294967295 and 2^32 as 0 without a word).
+pub(super) fn seed_of(v: f64) -> crate::Result<u64> {
+    if v.fract() == 0.0 && (0.0..=MAX_SAFE_INTEGER).contains(&v) {
+        Ok(v as u64)
+    } else {
+        Err(Error::InvalidParameter(format!(
+            "seed must be a whole number from 0 to 2^53 - 1, got {v:?}"
+        )))
+    }
+}
+
 /// The k-means parameters of `kmeans` and `chooseK` (restarts: 1 unless given).
 fn kmeans_params(
     k: usize,
     seeding: &str,
-    seed: u32,
+    seed: f64,
     restarts: Option<f64>,
 ) -> crate::Result<KMeansParams> {
     Ok(KMeansParams::new(k)
         .seeding(seeding.parse::<Seeding>()?)
-        .seed(seed.into())
+        .seed(seed_of(seed)?)
         .restarts(runs(restarts)?))
 }

@@ -17,14 +17,14 @@ impl Simulator {
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\"")]
         scene: &str,
-        seed: u32,
-        scans: Option<usize>,
+        seed: f64,
+        scans: Option<f64>,
         buildings: Option<String>,
     ) -> WasmResult<Simulator> {
         let kind: sim::SceneKind = scene.parse()?;
-        let mut p = sim::SimParams::new(kind, seed.into());
+        let mut p = sim::SimParams::new(kind, super::set::seed_of(seed)?);
         if let Some(n) = scans {
-            p.scans = n;
+            p.scans = super::set::count("scans", n)?;
         }
         if let Some(b) = buildings {
             p.buildings = b.parse()?;

@@ -73,11 +73,11 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     // The two room scans are nearer each other than to the ouster scans.
     assert!(m[3 * 6 + 4] < m[3 * 6]);
     // Same labels as the core computes on the same bytes.
-    let km = set.kmeans(3.0, "stride", 1, None).unwrap();
+    let km = set.kmeans(3.0, "stride", 1.0, None).unwrap();
     let labels = labels_of(&km);
     assert_eq!(labels[0], labels[1]);
     assert_eq!(labels[3], labels[4]);
-    let tree = set.hkmeans(2, None).unwrap();
+    let tree = set.hkmeans(2.0, None).unwrap();
     let linkage = tree.linkage().to_vec();
     assert_eq!(linkage.len(), 5 * 4);
     let cut = tree.cut_k(3.0).unwrap();
@@ -95,11 +95,11 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     assert_eq!(set.reference_sets(), 10);
     let (even, odd) = (
         other
-            .reference_dispersions(2, &[0, 2, 4, 6, 8], None)
+            .reference_dispersions(2.0, &[0, 2, 4, 6, 8], None)
             .unwrap()
             .to_vec(),
         other
-            .reference_dispersions(2, &[1, 3, 5, 7, 9], None)
+            .reference_dispersions(2.0, &[1, 3, 5, 7, 9], None)
             .unwrap()
             .to_vec(),
     );
@@ -107,21 +107,21 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     let all: Vec<f64> = (0..10)
         .flat_map(|b| [&even, &odd][b % 2][b / 2 * 6..b / 2 * 6 + 6].to_vec())
         .collect();
-    let with = set.choose_categories_with(&tree, &all, 2, None).unwrap();
+    let with = set.choose_categories_with(&tree, &all, 2.0, None).unwrap();
     let own = set.choose_categories(&tree).unwrap();
     assert_eq!(
         js_sys::JSON::stringify(&with).unwrap(),
         js_sys::JSON::stringify(&own).unwrap()
     );
     let e = message(
-        set.choose_categories_with(&tree, &all[6..], 2, None)
+        set.choose_categories_with(&tree, &all[6..], 2.0, None)
             .err()
             .unwrap(),
     );
     assert!(e.contains("9 reference sets"), "{e}");
     // Drawn for a tree of another seed: refused, not another choice.
     let e = message(
-        set.choose_categories_with(&tree, &all, 3, None)
+        set.choose_categories_with(&tree, &all, 3.0, None)
             .err()
             .unwrap(),
     );
@@ -130,9 +130,9 @@ fn describe_real_bytes_and_cluster_through_the_api() {
         "{e}"
     );
     // Or for a tree of other trial splits (a tree of 10 trials a split).
-    let trials = set.hkmeans(2, Some(10.0)).unwrap();
+    let trials = set.hkmeans(2.0, Some(10.0)).unwrap();
     let e = message(
-        set.choose_categories_with(&trials, &all, 2, None)
+        set.choose_categories_with(&trials, &all, 2.0, None)
             .err()
             .unwrap(),
     );
@@ -140,37 +140,37 @@ fn describe_real_bytes_and_cluster_through_the_api() {
         e.contains("seed 2, restarts 1; this tree's: seed 2, restarts 10"),
         "{e}"
     );
-    let e = message(set.hkmeans(2, Some(0.0)).err().unwrap());
+    let e = message(set.hkmeans(2.0, Some(0.0)).err().unwrap());
     assert!(e.contains("restarts must be at least 1"), "{e}");
     // Not a whole number: refused, not truncated (a u32 would take 2.5 as 2).
     for bad in [2.5, -1.0, f64::NAN, f64::INFINITY] {
-        let e = message(set.hkmeans(2, Some(bad)).err().unwrap());
+        let e = message(set.hkmeans(2.0, Some(bad)).err().unwrap());
         assert!(
             e.contains("restarts must be a whole number of runs"),
             "{bad}: {e}"
         );
     }
-    let e = message(set.kmeans(3.0, "plusplus", 1, Some(2.5)).err().unwrap());
+    let e = message(set.kmeans(3.0, "plusplus", 1.0, Some(2.5)).err().unwrap());
     assert!(
         e.contains("restarts must be a whole number of runs from 1, got 2.5"),
         "{e}"
     );
-    let e = message(set.choose_k("plusplus", 1, Some(-1.0)).err().unwrap());
+    let e = message(set.choose_k("plusplus", 1.0, Some(-1.0)).err().unwrap());
     assert!(e.contains("got -1.0"), "{e}");
-    let e = message(set.hkmeans(2, Some(-0.0)).err().unwrap());
+    let e = message(set.hkmeans(2.0, Some(-0.0)).err().unwrap());
     assert!(e.contains("restarts must be at least 1"), "{e}");
     for huge in [2f64.powi(40), 1e300] {
-        let e = message(set.hkmeans(2, Some(huge)).err().unwrap());
+        let e = message(set.hkmeans(2.0, Some(huge)).err().unwrap());
         assert!(e.contains("is more than the limit of 1000"), "{e}");
         assert!(e.len() < 120, "{e}");
     }
-    let e = message(other.reference_dispersions(2, &[10], None).err().unwrap());
+    let e = message(other.reference_dispersions(2.0, &[10], None).err().unwrap());
     assert!(e.contains("reference set 10 asked for, of 10"), "{e}");
 }
 
 #[wasm_bindgen_test]
 fn simulated_demo_model_round_trip_and_classify() {
-    let sim = Simulator::new("indoor", 4, Some(2), None).unwrap();
+    let sim = Simulator::new("indoor", 4.0, Some(2.0), None).unwrap();
     assert_eq!(sim.length(), 10);
     let mut set = DescriptorSet::new(JsValue::UNDEFINED, None).unwrap();
     let mut truth = Vec::new();
@@ -184,24 +184,24 @@ fn simulated_demo_model_round_trip_and_classify() {
         set.add_json(&d.descriptor_json().unwrap()).unwrap();
         scans.push(d);
     }
-    let km = set.kmeans(5.0, "plusplus", 1, None).unwrap();
+    let km = set.kmeans(5.0, "plusplus", 1.0, None).unwrap();
     // Restarts: run 0 is the single run, the cheapest of 10 is kept (and
     // the kept run's index comes back); stride restarts are refused.
-    let one = set.kmeans(5.0, "plusplus", 1, Some(1.0)).unwrap();
+    let one = set.kmeans(5.0, "plusplus", 1.0, Some(1.0)).unwrap();
     assert_eq!(labels_of(&one), labels_of(&km));
     assert_eq!(get(&one, "restart").as_f64(), Some(0.0));
-    let ten = set.kmeans(5.0, "plusplus", 1, Some(10.0)).unwrap();
+    let ten = set.kmeans(5.0, "plusplus", 1.0, Some(10.0)).unwrap();
     let cost = |v: &JsValue| get(v, "cost").as_f64().unwrap();
     // Measured (as `placecat cluster --restarts 10` on the same scans):
     // run 9 is kept, cost 0.7291 against the single run's 0.8646.
     assert_eq!(get(&ten, "restart").as_f64(), Some(9.0));
     assert!((cost(&km) - 0.8646).abs() < 1e-4, "{}", cost(&km));
     assert!((cost(&ten) - 0.7291).abs() < 1e-4, "{}", cost(&ten));
-    let e = message(set.kmeans(5.0, "stride", 1, Some(10.0)).err().unwrap());
+    let e = message(set.kmeans(5.0, "stride", 1.0, Some(10.0)).err().unwrap());
     assert!(e.contains("restarts = 10 with stride"), "{e}");
     // A huge count is an Error, not a trap (it used to run out of memory).
     let e = message(
-        set.kmeans(5.0, "plusplus", 1, Some(u32::MAX as f64))
+        set.kmeans(5.0, "plusplus", 1.0, Some(u32::MAX as f64))
             .err()
             .unwrap(),
     );
@@ -309,21 +309,48 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     let cut = json.replacen(",0,", ",", 1);
     let e = message(set.add_json(&cut).err().unwrap());
     assert!(e.contains("rows x cols = 11 x 7"), "{e}");
-    let e = message(set.kmeans(0.0, "stride", 0, None).err().unwrap());
+    let e = message(set.kmeans(0.0, "stride", 0.0, None).err().unwrap());
     assert!(e.contains("k must be at least 1"), "{e}");
-    assert!(message(set.kmeans(2.0, "sideways", 0, None).err().unwrap()).contains("sideways"));
+    assert!(message(set.kmeans(2.0, "sideways", 0.0, None).err().unwrap()).contains("sideways"));
     // Counts are whole numbers: 2.5 is not taken as 2, nor -1 as 4294967295.
-    let e = message(set.kmeans(2.5, "stride", 0, None).err().unwrap());
+    let e = message(set.kmeans(2.5, "stride", 0.0, None).err().unwrap());
     assert!(e.contains("k must be a whole number, got 2.5"), "{e}");
-    let e = message(set.kmedoids(-1.0, 0).err().unwrap());
+    let e = message(set.kmedoids(-1.0, 0.0).err().unwrap());
     assert!(e.contains("k must be a whole number, got -1.0"), "{e}");
     let e = message(set.dbscan(0.5, 1.5).err().unwrap());
     assert!(
         e.contains("minPoints must be a whole number, got 1.5"),
         "{e}"
     );
-    let e = message(set.kmeans(1e300, "stride", 0, None).err().unwrap());
+    let e = message(set.kmeans(1e300, "stride", 0.0, None).err().unwrap());
     assert!(e.contains("k = 1e300 is more than any set holds"), "{e}");
+    // Seeds too: -1 is not taken as 4294967295, nor 2^32 as 0, nor 2.5 as 2;
+    // seeds beyond 32 bits up to 2^53 - 1 are the CLI's --seed of that number.
+    for bad in [-1.0, 2.5, f64::NAN, 9_007_199_254_740_992.0] {
+        let e = message(set.kmeans(2.0, "stride", bad, None).err().unwrap());
+        assert!(
+            e.contains("seed must be a whole number from 0 to 2^53 - 1, got"),
+            "{e}"
+        );
+        assert!(set.hkmeans(bad, None).is_err() && set.kmedoids(2.0, bad).is_err());
+    }
+    let wide = set.hkmeans(4_294_967_296.0, None).unwrap();
+    let e = message(
+        set.choose_categories_with(&wide, &[], 0.0, None)
+            .err()
+            .unwrap(),
+    );
+    assert!(
+        e.contains("this tree's: seed 4294967296, restarts 1"),
+        "{e}"
+    );
+    assert!(message(Simulator::new("indoor", -1.0, None, None).err().unwrap()).contains("seed"));
+    assert!(message(
+        Simulator::new("indoor", 1.0, Some(2.5), None)
+            .err()
+            .unwrap()
+    )
+    .contains("scans must be a whole number, got 2.5"));
     assert!(message(set.dbscan(-1.0, 2.0).err().unwrap()).contains("epsilon"));
     assert!(message(set.dbscan_sweep(&[], &[2], None).err().unwrap()).contains("at least one"));
     assert!(message(
@@ -333,16 +360,16 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     )
     .contains("ground-truth"));
     assert!(message(Model::from_json("{\"format\": 1}").err().unwrap()).starts_with("model:"));
-    assert!(message(Simulator::new("moon", 0, None, None).err().unwrap()).contains("moon"));
+    assert!(message(Simulator::new("moon", 0.0, None, None).err().unwrap()).contains("moon"));
     let e = message(
-        Simulator::new("indoor", 0, None, Some("few".into()))
+        Simulator::new("indoor", 0.0, None, Some("few".into()))
             .err()
             .unwrap(),
     );
     assert!(e.contains("few") && e.contains("one, many"), "{e}");
     // Still usable after the errors.
     assert_eq!(
-        labels_of(&set.kmeans(2.0, "stride", 0, None).unwrap()).len(),
+        labels_of(&set.kmeans(2.0, "stride", 0.0, None).unwrap()).len(),
         6
     );
 }
