@@ -22,26 +22,64 @@ use serde_json::Value;
 /// centre-based paths, DBSCAN and k-medoids are refused.
 pub const MATRIX_LIMIT: usize = 5000;
 
-/// Descriptor parameters from a preset (default `indoor`) with the fields
-/// of `overrides` (a JSON object, possibly partial) put over it; unknown
-/// fields and invalid values are errors. The page's parameter form and the
-/// CLI's `--params` file both come through here.
+/// Descriptor parameters from a preset with the fields of `overrides` (a
+/// JSON object, possibly partial) put over it; unknown fields and invalid
+/// values are errors. The page's parameter form, the CLI's `--params` file
+/// and Python's dict all come through here.
+///
+/// The preset is `preset`, else the one the overrides name (`"preset":
+/// "outdoor"`, as every parameters file placecat writes does), else
+/// `indoor`. The fields the overrides leave out come from that preset, so
+/// where it is not the one they name and that changes a value, they are
+/// refused rather than read as something else: `{"preset": "outdoor",
+/// "voxel_size": 2.5}` over `indoor` would describe with indoor ranges
+/// labelled outdoor. A full parameters file leaves nothing to the preset
+/// and is taken as given; a name that is no preset is the user's label.
 pub fn merge_params(preset: Option<&str>, overrides: Option<&Value>) -> Result<DescriptorParams> {
-    let base = DescriptorParams::preset(preset.unwrap_or("indoor"))?;
-    let Some(overrides) = overrides.filter(|v| !v.is_null()) else {
-        return Ok(base);
-    };
-    let Some(fields) = overrides.as_object() else {
+    let overrides = overrides.filter(|v| !v.is_null());
+    if overrides.is_some_and(|v| !v.is_object()) {
         return invalid("parameters must be a JSON object");
+    }
+    let named = overrides
+        .and_then(|v| v.get("preset"))
+        .and_then(Value::as_str)
+        .filter(|n| DescriptorParams::preset(n).is_ok());
+    let base = preset.or(named).unwrap_or("indoor");
+    let merged = merge_over(base, overrides)?;
+    if let Some(name) = named.filter(|&n| n != base) {
+        let theirs = merge_over(name, overrides)?;
+        if theirs != merged {
+            let (ours, theirs) = (
+                serde_json::to_value(&merged)?,
+                serde_json::to_value(&theirs)?,
+            );
+            let fields: Vec<&str> = (ours.as_object().into_iter().flatten())
+                .filter(|&(k, v)| k != "preset" && theirs.get(k.as_str()) != Some(v))
+                .map(|(k, _)| k.as_str())
+                .collect();
+            return invalid(format!(
+                "the parameters name preset {name:?} but are laid over preset {base:?}, \
+                 whose values differ in fields they leave out ({}): choose preset {name:?}, \
+                 give those fields, or remove \"preset\" from them",
+                fields.join(", ")
+            ));
+        }
+    }
+    merged.validate()?;
+    Ok(merged)
+}
+
+/// The preset `base` with the fields of `overrides` (an object or none) over it.
+fn merge_over(base: &str, overrides: Option<&Value>) -> Result<DescriptorParams> {
+    let base = DescriptorParams::preset(base)?;
+    let Some(fields) = overrides.and_then(Value::as_object) else {
+        return Ok(base);
     };
     let mut merged = serde_json::to_value(&base)?;
     for (k, v) in fields {
         merged[k] = v.clone();
     }
-    let p: DescriptorParams =
-        serde_json::from_value(merged).map_err(|e| Error::InvalidParameter(e.to_string()))?;
-    p.validate()?;
-    Ok(p)
+    serde_json::from_value(merged).map_err(|e| Error::InvalidParameter(e.to_string()))
 }
 
 /// Names for categories, from a JSON object `{label: name}` or an array
@@ -429,6 +467,39 @@ mod tests {
                 "{e}"
             );
         }
+    }
+
+    #[test]
+    fn a_preset_the_parameters_name_is_their_base_and_a_conflict_is_refused() {
+        let partial = serde_json::json!({"preset": "outdoor", "voxel_size": 2.5});
+        // Named only by the parameters: their base (Python's dict, a CLI
+        // --params file without --preset).
+        let p = merge_params(None, Some(&partial)).unwrap();
+        assert_eq!(p.ranges, DescriptorParams::outdoor().ranges);
+        assert_eq!((p.voxel_size, p.preset.as_str()), (2.5, "outdoor"));
+        // The same preset given twice: the same.
+        assert_eq!(merge_params(Some("outdoor"), Some(&partial)).unwrap(), p);
+        // Another preset: its ranges would fill the fields left out.
+        let e = merge_params(Some("indoor"), Some(&partial))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains(r#"name preset "outdoor" but are laid over preset "indoor""#)
+                && e.contains("ranges")
+                && !e.contains("voxel_size"),
+            "{e}"
+        );
+        // A full parameters file leaves nothing to its base: taken as given.
+        let full = serde_json::to_value(DescriptorParams::indoor()).unwrap();
+        let p = merge_params(Some("outdoor"), Some(&full)).unwrap();
+        assert_eq!(p, DescriptorParams::indoor());
+        // A name that is no preset is a label, over the preset given.
+        let own = serde_json::json!({"preset": "my_site", "voxel_size": 2.5});
+        let p = merge_params(Some("outdoor"), Some(&own)).unwrap();
+        assert_eq!(
+            (p.ranges, p.preset),
+            (DescriptorParams::outdoor().ranges, "my_site".into())
+        );
     }
 
     #[test]

@@ -5,7 +5,7 @@ is written from it by hand, with the machine's load).
 
     python python/examples/scaling.py --cli target/release/placecat [--work /tmp/placecat-scaling]
 
-1. 2,000 simulated indoor scans (`placecat simulate --scans 400 --seed 2`,
+1. 2,000 simulated indoor scans (`placecat simulate --scene indoor --scans 400 --seed 2`,
    a development seed) written under --work (never in the repository).
 2. Describe them: one plain Python process (`describe_file` in a loop),
    the same with a thread per core (the GIL is released), a LocalCluster of

@@ -266,7 +266,7 @@ impl PyCollection {
         Ok(labels_array(py, labels))
     }
 
-    /// The most central scan of each category: {label: index}.
+    /// The most central scan of each category: a list of (label, index).
     fn medoids(
         &mut self,
         labels: PyArrayLike1<'_, i32, AllowTypeChange>,

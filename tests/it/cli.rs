@@ -218,6 +218,40 @@ fn describe_with_params_file_and_all_failing_exits_nonzero() {
             .arg(dir.join("y.json")),
     );
     assert!(e.contains("voxel_sise"), "{e}");
+
+    // A file naming its preset: that preset under the fields it gives,
+    // unless --preset says another, which is refused naming the file.
+    std::fs::write(
+        dir.join("outdoor.json"),
+        r#"{"preset": "outdoor", "voxel_size": 0.5}"#,
+    )
+    .unwrap();
+    succeeds(
+        placecat()
+            .args(["describe", "--params"])
+            .arg(dir.join("outdoor.json"))
+            .arg(dir.join("s.ply"))
+            .arg("-o")
+            .arg(dir.join("z.json")),
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("z.json")).unwrap()).unwrap();
+    let outdoor = placecat::DescriptorParams::outdoor();
+    assert_eq!(v["params"]["ranges"], serde_json::json!(outdoor.ranges));
+    assert_eq!(v["params"]["voxel_size"], 0.5);
+    let e = fails(
+        placecat()
+            .args(["describe", "--preset", "indoor", "--params"])
+            .arg(dir.join("outdoor.json"))
+            .arg(dir.join("s.ply"))
+            .arg("-o")
+            .arg(dir.join("w.json")),
+    );
+    assert!(
+        e.contains("outdoor.json")
+            && e.contains(r#"name preset "outdoor" but are laid over preset "indoor""#),
+        "{e}"
+    );
 }
 
 #[test]

@@ -87,20 +87,21 @@ impl DescriptorsFile {
     }
 }
 
-/// The preset's parameters with the fields of the `--params` file over them.
-fn load_params(preset: &str, params: Option<&Path>) -> Result<DescriptorParams> {
+/// The preset's parameters with the fields of the `--params` file over them
+/// (no `--preset`: the one the file names, else indoor; see `merge_params`).
+fn load_params(preset: Option<&str>, params: Option<&Path>) -> Result<DescriptorParams> {
     let Some(path) = params else {
-        return merge_params(Some(preset), None);
+        return merge_params(preset, None);
     };
     let name = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| Error::from(e).in_file(&name))?;
     let over: serde_json::Value =
         serde_json::from_str(&text).map_err(|e| Error::from(e).in_file(&name))?;
-    merge_params(Some(preset), Some(&over)).map_err(|e| e.in_file(&name))
+    merge_params(preset, Some(&over)).map_err(|e| e.in_file(&name))
 }
 
 pub fn run(
-    preset: &str,
+    preset: Option<&str>,
     params: Option<&Path>,
     inputs: &[PathBuf],
     output: &Path,

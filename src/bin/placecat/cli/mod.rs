@@ -19,7 +19,10 @@ fn preset_help() -> String {
         .iter()
         .map(|(name, note)| format!("{name} ({note})"))
         .collect();
-    format!("Parameter preset: {}.", notes.join("; "))
+    format!(
+        "Parameter preset: {}. Default: the preset the --params file names, else indoor",
+        notes.join("; ")
+    )
 }
 
 #[derive(Parser)]
@@ -51,9 +54,10 @@ enum Command {
     /// Compute the NDT-histogram descriptor of every scan.
     Describe {
         /// Parameter preset (the names come from the one preset table).
-        #[arg(long, default_value = "indoor", help = preset_help())]
-        preset: String,
-        /// JSON file of parameters (fields not given keep the preset's values).
+        #[arg(long, help = preset_help())]
+        preset: Option<String>,
+        /// JSON file of parameters (fields not given keep the preset's
+        /// values: --preset's, else the preset the file names, else indoor).
         #[arg(long)]
         params: Option<PathBuf>,
         /// Files or folders, and ROS bags (.bag, .mcap). Folders are
@@ -267,7 +271,7 @@ pub fn main() -> ExitCode {
             limits,
             bag,
         } => describe::run(
-            &preset,
+            preset.as_deref(),
             params.as_deref(),
             &inputs,
             &output,
