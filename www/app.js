@@ -100,7 +100,7 @@ async function loadFiles(list) {
   for (const f of poses) await loadPoses(f.file, f.name);
   if (scans.length === 0) {
     // Only a poses file or labels.csv is fine (they apply to the scans shown).
-    if (other.length) addError('input', 'no PLY, PCD or .bin scans or ROS bags among the files');
+    if (other.length) addError('input', 'no scans (PLY, PCD, KITTI .bin, LAS/LAZ, E57) or ROS bags among the files');
     if (state.scans.length) render();
     return;
   }

@@ -3,7 +3,8 @@
 /** A ROS bag (ROS 1 .bag, rosbag2 .mcap): one input that yields many scans (bag.js).
  * rosbag2's SQLite storage (.db3) counts too, to be refused with a message (bagreader.js). */
 export const isBag = (name) => /\.(bag|mcap|db3)$/i.test(name);
-export const isScan = (name) => /\.(ply|pcd|bin)$/i.test(name) || isBag(name);
+/** A file of one scan the wasm reader takes (src/io: PLY, PCD, KITTI .bin, LAS/LAZ, single-scan E57), or a bag. */
+export const isScan = (name) => /\.(ply|pcd|bin|las|laz|e57)$/i.test(name) || isBag(name);
 export const isTruth = (name) => /(^|\/)labels\.csv$/i.test(name);
 export const isPoses = (name) => /poses[^/]*\.(txt|csv)$/i.test(name) || /(^|\/)(trajectory|groundtruth)[^/]*\.(txt|csv)$/i.test(name);
 

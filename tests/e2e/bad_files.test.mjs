@@ -46,3 +46,28 @@ test('damaged files are listed as errors naming the file, the rest of the batch 
   await h.page.screenshot({ path: join(ARTIFACTS, 'bad-files.png') });
   assert.deepEqual(h.problems, []);
 });
+
+test('LAS, LAZ and E57 through the file input: read as the CLI reads them; a georeferenced LAS and damaged ones refused naming the file', async () => {
+  // tests/data/survey: written by laspy and pye57 (make_survey.py), the CLI's fixtures.
+  const SURVEY = join(ROOT, 'tests/data/survey');
+  const good = ['las12_fmt1.las', 'laz12_fmt1.laz', 'laz14_fmt6.laz'];
+  const refused = {
+    'geo14_fmt6.las': /^geo14_fmt6\.las: LAS\/LAZ: no sensor position: the points span x 512337\.678\.\.512353\.678/,
+    'truncated.las': /^truncated\.las: LAS\/LAZ: the header declares 700 points of 34 bytes from byte 227, but the file has 23027 bytes \(truncated\?\)$/,
+    'corrupt_chunk.laz': /^corrupt_chunk\.laz: LAS\/LAZ: LAZ data damaged or cut short in points 0\.\.3000 of 3000/,
+    'truncated.e57': /^truncated\.e57: E57: .*truncated/,
+    // 300 points in one plane: read, but too few for a descriptor (the CLI says the same).
+    'single.e57': /^single\.e57: no descriptor: no classified voxel/,
+  };
+  const files = [...good, ...Object.keys(refused)].map((f) => join(SURVEY, f));
+  const real = ['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd'].map((f) => join(REAL, f));
+  await afterRun(h.page, () => h.page.setInputFiles('#files', [...files, ...real]));
+  const errors = await h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent ?? ''));
+  for (const [file, want] of Object.entries(refused)) {
+    assert.ok(errors.some((e) => want.test(e)), `${file}: want ${want} among\n  ${errors.join('\n  ')}`);
+  }
+  assert.equal(errors.length, Object.keys(refused).length, errors.join('\n'));
+  const described = good.length + real.length;
+  assert.match(await h.page.textContent('#cluster-status'), new RegExp(`from ${described} scans`));
+  assert.deepEqual(h.problems, []);
+});

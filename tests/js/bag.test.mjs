@@ -27,6 +27,7 @@ test('bag types as ROS 1 and rosbag2 spell them', () => {
     [true, false, true, false]);
   // .db3 is taken as a bag to be refused with its message, not passed over.
   assert.ok(isBag('a/run.BAG') && isBag('x.mcap') && isScan('x.mcap') && isBag('x.db3') && !isBag('metadata.yaml'));
+  assert.ok(['a.las', 'b.LAZ', 'c.e57', 'd.ply'].every(isScan) && !isScan('notes.txt') && !isScan('e57.json'));
 });
 
 test('a bag cloud keeps its topic in its name; only the folders before the bag go', () => {

@@ -120,8 +120,9 @@ fn survey(
         super::write_out(None, &format!("{v}\n"))?;
     } else {
         let mut text = format!(
-            "file:   {shown}\nformat: e57, {} scans\npoints: {count} ({finite} finite)\nsum:    {sum:?}\n",
-            scans.len()
+            "file:   {shown}\nformat: e57, {} {}\npoints: {count} ({finite} finite)\nsum:    {sum:?}\n",
+            scans.len(),
+            if scans.len() == 1 { "scan" } else { "scans" }
         );
         for s in &scans {
             text.push_str(&format!(
