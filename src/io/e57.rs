@@ -80,6 +80,62 @@ pub fn for_each_scan_path(
         .map_err(|e| e.in_file(&name))
 }
 
+/// The scans of a survey one at a time, in file order, from any `Read +
+/// Seek` (in the page: a [`super::source::SourceReader`] over `File.slice`),
+/// so that only the scan being read is held. A scan that cannot be read is
+/// an `Err` naming the file and the scan; the next call reads the next one.
+pub struct SurveyScans<R: Read + Seek> {
+    survey: Survey<R>,
+    next: usize,
+    limits: ReadLimits,
+    file: String,
+}
+
+impl<R: Read + Seek> SurveyScans<R> {
+    /// Open the survey in `reader`; `file` names it (and prefixes the scans'
+    /// names). Reads the file's header and XML section, no points.
+    pub fn open(reader: R, file: &str, limits: ReadLimits) -> Result<Self> {
+        Ok(SurveyScans {
+            survey: Survey::open(reader, file).map_err(|e| e.in_file(file))?,
+            next: 0,
+            limits,
+            file: file.to_string(),
+        })
+    }
+
+    /// How many scans the survey holds.
+    pub fn len(&self) -> usize {
+        self.survey.clouds.len()
+    }
+
+    /// Never: a survey with no scans is refused when opened.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// How many scans were read so far (failed ones included).
+    pub fn met(&self) -> usize {
+        self.next
+    }
+}
+
+impl<R: Read + Seek> Iterator for SurveyScans<R> {
+    type Item = Result<RecordedScan>;
+
+    fn next(&mut self) -> Option<Result<RecordedScan>> {
+        let i = self.next;
+        if i >= self.len() {
+            return None;
+        }
+        self.next += 1;
+        Some(
+            self.survey
+                .scan(i, &self.limits)
+                .map_err(|e| e.in_file(&self.file)),
+        )
+    }
+}
+
 /// The one scan of a single-station E57, for [`super::read_scan`]; a survey
 /// of several is refused, before any is read, with the advice to read its
 /// scans one by one.

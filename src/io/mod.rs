@@ -13,6 +13,7 @@ pub mod ply;
 pub mod poses;
 pub mod recording;
 mod scalar;
+pub mod source;
 pub mod write;
 
 pub use scalar::Scalar;

@@ -8,8 +8,9 @@
 //! reading from paths and the panic guard around the LAZ decoder are
 //! native only.
 
-use placecat::io::e57::{for_each_scan, read_scans};
+use placecat::io::e57::{for_each_scan, read_scans, SurveyScans};
 use placecat::io::recording::RecordedScan;
+use placecat::io::source::SourceReader;
 use placecat::io::{is_scan_name, read_scan_at, read_scan_named, ReadLimits};
 use placecat::{Format, PointCloud};
 use serde_json::Value;
@@ -299,6 +300,58 @@ fn a_damaged_page_of_an_e57_scan_is_refused_naming_the_file_and_the_scan() {
         read_scans(&damaged, "flipped.e57", &ReadLimits::default()),
         "flipped.e57",
         "scan 1 (office)",
+    );
+}
+
+#[test]
+fn a_survey_read_by_byte_ranges_is_the_survey_and_a_damaged_scan_is_skipped() {
+    // The page's way (E57Scans over File.slice): a byte source as Read +
+    // Seek, one scan at a time. The same scans as from the bytes whole.
+    let whole = read_scans(bytes("survey.e57"), "survey.e57", &ReadLimits::default()).unwrap();
+    let source = SourceReader::new(bytes("survey.e57"));
+    let scans = SurveyScans::open(source, "survey.e57", ReadLimits::default()).unwrap();
+    assert_eq!((scans.len(), scans.met()), (4, 0));
+    let streamed: Vec<RecordedScan> = scans.map(Result::unwrap).collect();
+    // Bit for bit (the office's invalid points are NaN, never equal as floats).
+    let bits = |s: &[RecordedScan]| -> Vec<(String, Vec<u32>, Option<[f64; 3]>)> {
+        s.iter()
+            .map(|s| {
+                let p = s.points.iter().flatten().map(|v| v.to_bits()).collect();
+                (s.name.clone(), p, s.pose.as_ref().map(|p| p.position))
+            })
+            .collect()
+    };
+    assert_eq!(bits(&streamed), bits(&whole));
+    // The second scan's page damaged: its error names the file and the
+    // scan, and the scans after it are still read.
+    let at = e57::E57Reader::new(std::io::Cursor::new(bytes("survey.e57")))
+        .unwrap()
+        .pointclouds()[1]
+        .file_offset as usize
+        + 2000;
+    let mut damaged = bytes("survey.e57").to_vec();
+    damaged[at] ^= 0xff;
+    let mut scans = SurveyScans::open(
+        SourceReader::new(damaged),
+        "flipped.e57",
+        ReadLimits::default(),
+    )
+    .unwrap();
+    assert_eq!(scans.next().unwrap().unwrap().name, "flipped.e57:hall");
+    refused(scans.next().unwrap(), "flipped.e57", "scan 1 (office)");
+    assert_eq!(scans.met(), 2);
+    let rest: Vec<String> = scans.map(|s| s.unwrap().name).collect();
+    assert_eq!(rest, ["flipped.e57:hall (scan 2)", "flipped.e57:store"]);
+    // A file that is no survey is refused when opened, naming it.
+    refused(
+        SurveyScans::open(
+            SourceReader::new(bytes("las12_fmt0.las")),
+            "x.e57",
+            ReadLimits::default(),
+        )
+        .map(|s| s.len()),
+        "x.e57",
+        "E57",
     );
 }
 

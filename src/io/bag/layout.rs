@@ -3,8 +3,8 @@
 //! connections each chunk holds (so a pass can skip chunks it has no use for).
 
 use super::msg::Encoding;
-use super::source::{ByteSource, Window};
 use crate::error::Result;
+use crate::io::source::{ByteSource, Window};
 use std::collections::HashMap;
 
 /// One connection (ROS 1) or channel (MCAP).

@@ -35,18 +35,17 @@ mod pose;
 mod reader;
 mod ros1;
 mod rosbag2;
-mod source;
 
-pub use reader::BagReader;
-pub use source::ByteSource;
+pub use super::source::ByteSource;
 #[cfg(not(target_arch = "wasm32"))]
-pub use source::FileSource;
+pub use super::source::FileSource;
+pub use reader::BagReader;
 
+use super::source::Window;
 use super::ReadLimits;
 use crate::error::{Error, Result};
 use layout::{is_type, Item, Layout, Walk, Want};
 use serde::{Deserialize, Serialize};
-use source::Window;
 
 /// One topic of a bag.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -8,8 +8,8 @@
 use super::compress::decompress;
 use super::layout::{Conn, Item, Layout, Walk, WalkState, Want};
 use super::msg::Encoding;
-use super::source::{ByteSource, Window};
 use crate::error::{Error, Result};
+use crate::io::source::{ByteSource, Window};
 
 pub(crate) const MAGIC: &[u8] = b"#ROSBAG V2.0\n";
 

@@ -9,8 +9,8 @@
 use super::compress::decompress;
 use super::layout::{Conn, Item, Layout, Walk, WalkState, Want};
 use super::msg::Encoding;
-use super::source::{ByteSource, Window};
 use crate::error::{Error, Result};
+use crate::io::source::{ByteSource, Window};
 use mcap::records::{op, Record};
 use std::collections::HashMap;
 
