@@ -150,6 +150,14 @@ assert.equal(cloud.name, 'corridor.bag:/points:000000');
 same('Pose', cloud.pose());
 assert.deepEqual(clouds.next().pose().position, [0.5, 0.25, 0]);
 assert.equal(clouds.next(), undefined, 'two clouds, then undefined');
+// An E57 survey the same way: four stations with their poses.
+const e57 = readFileSync(`${real}/../survey/survey.e57`);
+const stations = new pc.E57Scans(e57.length, (offset, length) => e57.subarray(offset, offset + length), 'survey.e57');
+assert.equal(stations.total, 4);
+const office = (stations.next(), stations.next());
+assert.equal(office.name, 'survey.e57:office');
+same('Pose', office.pose());
+assert.deepEqual(office.pose().position, [10, 2, 0.5]);
 assert.equal(scans[0].pose(), null, 'a file has no pose');
 // The hand-written literal types name only values the API takes.
 const literals = (name) => dts.match(new RegExp(`export type ${name} = ([^;]*);`))[1].split('|').map((x) => JSON.parse(x.trim()));
@@ -163,7 +171,7 @@ node shapes.mjs "$real"
 # (wasm-bindgen's classes declare [Symbol.dispose]: lib esnext.disposable).
 # Node resolution gets the node declarations, which need nothing more.
 cat > typed.ts <<'TS'
-import { BagClouds, DescriptorSet, Simulator, bagTopics, describePoints, describeScan, presetParams, type DescribedScan, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
+import { BagClouds, DescriptorSet, E57Scans, Simulator, bagTopics, describePoints, describeScan, presetParams, type DescribedScan, type Cut, type Evaluation, type SweepPoint, type DescriptorParams } from 'placecat';
 const params: Required<DescriptorParams> = presetParams('indoor');
 const set = new DescriptorSet({ voxel_size: params.voxel_size }, 'indoor');
 const cut: Cut = set.hkmeans(0).cutK(2);
@@ -179,10 +187,11 @@ const fromBuffer: string = describeScan(new ArrayBuffer(0), 'empty.ply').format;
 const clouds = new BagClouds(3, (offset: number, length: number) => new Uint8Array(length), 'a.bag', '/points', 1);
 const next: DescribedScan | undefined = clouds.next();
 const topicCount: number = bagTopics(3, () => new ArrayBuffer(3), 'a.bag')[0].count;
-export const used = [next?.pose()?.position[0], topicCount, fromPoints, fromBuffer, cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km, medoid, bytes.length];
+const station: DescribedScan | undefined = new E57Scans(3, (offset: number, length: number) => new Uint8Array(length), 'a.e57', null, 'indoor', 100).next();
+export const used = [next?.pose()?.position[0], station?.name, topicCount, fromPoints, fromBuffer, cut.threshold, ev.accuracy, best?.epsilon, firstName, radius, km, medoid, bytes.length];
 TS
 echo "--- no public method returns or takes 'any' (the raw wasm exports aside)"
-if grep -vE '^\s*readonly [A-Za-z_]+: \(' node_modules/placecat/web/placecat.d.ts | grep -nE ': any\b'; then
+if grep -vE '^\s*readonly [A-Za-z0-9_]+: \(' node_modules/placecat/web/placecat.d.ts | grep -nE ': any\b'; then
   echo "the .d.ts above leaves a public type as any"; exit 1
 fi
 echo "--- tsc --strict on a TypeScript consumer"

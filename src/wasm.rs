@@ -25,12 +25,15 @@ mod model;
 mod scan;
 mod set;
 mod simulator;
+mod source;
+mod survey;
 
 pub use bag::{bag_topics, BagClouds};
 pub use model::{ClusterTree, Model};
 pub use scan::{describe_points, describe_scan, read_scan, DescribedScan, Scan};
 pub use set::DescriptorSet;
 pub use simulator::Simulator;
+pub use survey::E57Scans;
 
 type WasmResult<T> = std::result::Result<T, JsError>;
 

@@ -3,72 +3,9 @@
 //! `File.slice`), so a bag of gigabytes is never held whole; see
 //! [`crate::io::bag`].
 
+use super::source::JsSource;
 use super::*;
-use crate::io::bag::{self, BagOptions, BagReader, ByteSource};
-
-/// A bag's bytes served by a JS function `read(offset, length)` that
-/// returns exactly those bytes (a Uint8Array or an ArrayBuffer).
-struct JsSource {
-    size: u64,
-    read: js_sys::Function,
-}
-
-impl JsSource {
-    fn new(size: f64, read: js_sys::Function, name: &str) -> WasmResult<JsSource> {
-        if !(size.is_finite() && size >= 0.0 && size.fract() == 0.0) {
-            return Err(JsError::new(&format!(
-                "{name}: the bag's size must be a whole number of bytes, not {size}"
-            )));
-        }
-        Ok(JsSource {
-            size: size as u64,
-            read,
-        })
-    }
-}
-
-impl ByteSource for JsSource {
-    fn size(&self) -> u64 {
-        self.size
-    }
-    fn read_at(&mut self, offset: u64, buf: &mut [u8]) -> crate::Result<()> {
-        let call = format!("read({offset}, {})", buf.len());
-        let got = self
-            .read
-            .call2(
-                &JsValue::NULL,
-                &JsValue::from_f64(offset as f64),
-                &JsValue::from_f64(buf.len() as f64),
-            )
-            .map_err(|e| Error::Bag(format!("{call} threw: {}", js_message(&e))))?;
-        let bytes = if let Some(a) = got.dyn_ref::<js_sys::Uint8Array>() {
-            a.clone()
-        } else if let Some(b) = got.dyn_ref::<js_sys::ArrayBuffer>() {
-            js_sys::Uint8Array::new(b)
-        } else {
-            return Err(Error::Bag(format!(
-                "{call} must return a Uint8Array or an ArrayBuffer, not {}",
-                js_kind(&got)
-            )));
-        };
-        if bytes.length() as usize != buf.len() {
-            return Err(Error::Bag(format!(
-                "{call} returned {} bytes",
-                bytes.length()
-            )));
-        }
-        bytes.copy_to(buf);
-        Ok(())
-    }
-}
-
-/// The message of a thrown JS value.
-fn js_message(e: &JsValue) -> String {
-    e.dyn_ref::<js_sys::Error>()
-        .map(|e| String::from(e.message()))
-        .or_else(|| e.as_string())
-        .unwrap_or_else(|| js_kind(e))
-}
+use crate::io::bag::{self, BagOptions, BagReader};
 
 /// The topics of a bag (ROS 1 `.bag` or rosbag2 `.mcap`) of `size` bytes,
 /// sorted by name: `[{name, type, count}]`. `read(offset, length)` returns
@@ -84,7 +21,10 @@ pub fn bag_topics(
     read: js_sys::Function,
     name: &str,
 ) -> WasmResult<JsValue> {
-    to_js(&bag::topics(JsSource::new(size, read, name)?, name)?)
+    to_js(&bag::topics(
+        JsSource::new(size, read, name, Error::Bag)?,
+        name,
+    )?)
 }
 
 /// The clouds of one `sensor_msgs/PointCloud2` topic of a bag, read in
@@ -133,7 +73,7 @@ impl BagClouds {
             ..Default::default()
         };
         Ok(BagClouds {
-            reader: BagReader::open(JsSource::new(size, read, name)?, name, opts)?,
+            reader: BagReader::open(JsSource::new(size, read, name, Error::Bag)?, name, opts)?,
             params,
             preview_points,
         })
@@ -159,18 +99,8 @@ impl BagClouds {
     /// the topic: call `next()` again for the clouds after it.
     #[wasm_bindgen(js_name = next)]
     pub fn next_cloud(&mut self) -> WasmResult<Option<DescribedScan>> {
-        let Some(scan) = self.reader.next() else {
-            return Ok(None);
-        };
-        let scan = scan?;
-        let mut d = DescribedScan::new(
-            &scan.name,
-            "ros_bag",
-            &scan.points,
-            &self.params,
-            self.preview_points,
-        )?;
-        d.pose = scan.pose;
-        Ok(Some(d))
+        (self.reader.next())
+            .map(|scan| DescribedScan::recorded(scan, "ros_bag", &self.params, self.preview_points))
+            .transpose()
     }
 }

@@ -51,8 +51,8 @@ pub struct DescribedScan {
     format: &'static str,
     pub(super) descriptor: Descriptor,
     preview: Vec<f32>,
-    /// Where the recording put the sensor (bag clouds); None for files.
-    pub(super) pose: Option<io::poses::Pose>,
+    /// Where the recording put the sensor (bag clouds, E57 stations); None for files.
+    pose: Option<io::poses::Pose>,
 }
 
 impl DescribedScan {
@@ -74,6 +74,20 @@ impl DescribedScan {
             descriptor,
             pose: None,
         })
+    }
+
+    /// A scan taken out of a recording (a bag's cloud, a survey's station),
+    /// described, with the pose the recording gives it.
+    pub(super) fn recorded(
+        scan: crate::Result<crate::io::recording::RecordedScan>,
+        format: &'static str,
+        params: &DescriptorParams,
+        preview_points: Option<usize>,
+    ) -> WasmResult<DescribedScan> {
+        let scan = scan?;
+        let mut d = DescribedScan::new(&scan.name, format, &scan.points, params, preview_points)?;
+        d.pose = scan.pose;
+        Ok(d)
     }
 }
 

@@ -524,6 +524,67 @@ fn bag_reader(
     read.into_js_value().unchecked_into()
 }
 
+/// The E57 survey of tests/data/survey (written by pye57, see
+/// make_survey.py): four stations, read a range at a time and described
+/// with their poses, as the CLI's describe names and places them; the
+/// ranges asked for are few and within the file; a file that is no E57
+/// is refused naming it.
+#[wasm_bindgen_test]
+fn an_e57_survey_streams_through_a_read_function_into_described_stations_with_poses() {
+    const SURVEY: &[u8] = include_bytes!("../data/survey/survey.e57");
+    let asked = std::rc::Rc::new(std::cell::RefCell::new(Vec::new()));
+    let size = SURVEY.len() as f64;
+    let mut scans = E57Scans::new(
+        size,
+        bag_reader(SURVEY, asked.clone()),
+        "survey.e57",
+        None,
+        None,
+        Some(100),
+    )
+    .unwrap();
+    assert_eq!((scans.total(), scans.met()), (4.0, 0.0));
+    let mut got = Vec::new();
+    while let Some(d) = scans.next_scan().unwrap() {
+        let pose = d.pose().unwrap();
+        let position: Vec<f64> = serde_wasm_bindgen::from_value(get(&pose, "position")).unwrap();
+        let points = get(&d.summary().unwrap(), "points").as_f64().unwrap();
+        assert_eq!(d.format(), "e57");
+        assert!(d.preview().length() <= 300);
+        got.push((d.name(), points, position));
+    }
+    assert_eq!(scans.met(), 4.0);
+    let want = [
+        ("survey.e57:hall", 900.0, [0.0, 0.0, 0.0]),
+        ("survey.e57:office", 690.0, [10.0, 2.0, 0.5]),
+        ("survey.e57:hall (scan 2)", 500.0, [-4.0, 6.0, 1.2]),
+        ("survey.e57:store", 400.0, [3.0, -7.0, 0.0]),
+    ];
+    let want: Vec<(String, f64, Vec<f64>)> = want
+        .iter()
+        .map(|(n, p, x)| (n.to_string(), *p, x.to_vec()))
+        .collect();
+    assert_eq!(got, want);
+    // Read ahead a block at a time: a 45 kB survey is one or two calls.
+    let asked = asked.borrow();
+    assert!(asked.len() <= 4, "{asked:?}");
+    assert!(asked.iter().all(|&(o, n)| o + n <= size), "{asked:?}");
+    let las = include_bytes!("../data/survey/las12_fmt0.las");
+    let e = message(
+        E57Scans::new(
+            las.len() as f64,
+            bag_reader(las, Default::default()),
+            "x.e57",
+            None,
+            None,
+            None,
+        )
+        .err()
+        .unwrap(),
+    );
+    assert!(e.starts_with("x.e57: E57: "), "{e}");
+}
+
 /// The corridor bag (written by the Python `rosbags` package, see
 /// tests/data/bags/make_bags.py): its topics, then its two clouds of 2700
 /// points each described with their odometry poses and names.
