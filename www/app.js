@@ -60,14 +60,14 @@ const engine = new Engine(wasm);
 // reads, on the browser's threads, get the cores in bursts); eight halved
 // that. Memory: at most eight files a worker, and more than one only while
 // they total 32 MB (large scans, e.g. 1M points, are held one or two at a
-// time). A bag (or the listing of its topics)
-// has a worker to itself and reads the bag itself, in slices; a reference
+// time). A bag or an E57 survey (or the listing of a bag's topics)
+// has a worker to itself and reads the file itself, in slices; a reference
 // set of the tail is held alone too, so that it goes to a free worker (matrix.js).
 const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, {
   depth: 8,
   bytes: (task) => task.file?.size ?? 0,
   maxBytes: 32 * 2 ** 20,
-  alone: (task) => task.type === 'bag' || task.type === 'bagTopics' || oneAtATime(task),
+  alone: (task) => task.type === 'bag' || task.type === 'survey' || task.type === 'bagTopics' || oneAtATime(task),
   prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
     : null,

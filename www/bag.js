@@ -12,8 +12,8 @@ import { isBag } from './files.js';
  * @typedef {{topic?: string, hasPoses: boolean, every?: number, everyMetres?: number, thinning: string}} BagChoice
  */
 /** @typedef {{name: string, file?: File, bag?: BagChoice}} BagInput */
-/** What the worker says of a bag at the end (bagreader.js).
- * @typedef {{topic: string, kept: number, failed: number, total: number}} BagInfo */
+/** What the worker says of a recording at the end (bagreader.js; `topic`: a bag's).
+ * @typedef {{recording: true, topic?: string, kept: number, failed: number, total: number}} BagInfo */
 
 /** sensor_msgs/PointCloud2 as ROS 1 and rosbag2 spell it. @param {string} type */
 export const isCloudType = (type) => /^sensor_msgs\/(msg\/)?PointCloud2$/.test(type);

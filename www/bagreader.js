@@ -1,8 +1,9 @@
-// The worker's side of a ROS bag (bag.js is the page's): the bag is read in
-// slices of its File (FileReaderSync over File.slice), never whole, and
-// each kept cloud is described and posted as it comes, so progress moves
-// and memory holds one cloud (and one chunk of the bag) at a time. Like
-// engine.js, every wasm object made here is freed here.
+// The worker's side of a recording, a ROS bag (bag.js is the page's side)
+// or an E57 survey: the file is read in slices of its File (FileReaderSync
+// over File.slice), never whole, and each kept cloud or station is
+// described and posted as it comes, so progress moves and memory holds one
+// scan (and one chunk of the bag) at a time. Like engine.js, every wasm
+// object made here is freed here.
 import { scanResult, scoped } from './engine.js';
 import { rangeShare, suggestPreset } from './suggest.js';
 
@@ -15,6 +16,10 @@ import { rangeShare, suggestPreset } from './suggest.js';
  * @typedef {{file: File, name: string, topic?: string, every?: number, everyMetres?: number,
  *   params: Params, byPreset?: Record<import('./suggest.js').SuggestedPreset, Params>, previewPoints?: number}} BagTask
  */
+/** An E57 survey to describe: every station, in file order.
+ * @typedef {{file: File, name: string, params: Params, byPreset?: Record<import('./suggest.js').SuggestedPreset, Params>, previewPoints?: number}} SurveyTask */
+/** The wasm reader of a recording: BagClouds or E57Scans (`topic`: a bag's).
+ * @typedef {{next(): import('./pkg/placecat.js').DescribedScan | undefined, met: number, total: number, topic?: string, free(): void}} Recording */
 /** A partial reply: a described cloud or one that failed, and how far the reading is.
  * @typedef {{scan?: ScanResult, error?: string, met: number, total: number}} BagPartial */
 
@@ -41,10 +46,18 @@ function refuseDb3(name) {
   }
 }
 
-/** @param {Wasm} wasm @param {BagTask} t @param {Params} params */
-function open(wasm, t, params) {
+/** Describe a bag's kept clouds (describeRecording). @param {Wasm} wasm @param {BagTask} t @param {(p: BagPartial, transfer: Transferable[]) => void} post */
+export function describeBag(wasm, t, post) {
   refuseDb3(t.name);
-  return new wasm.BagClouds(t.file.size, sliceReader(t.file), t.name, t.topic, t.every, params, undefined, t.previewPoints ?? 3000, t.everyMetres);
+  const open = (/** @type {Params} */ params) =>
+    new wasm.BagClouds(t.file.size, sliceReader(t.file), t.name, t.topic, t.every, params, undefined, t.previewPoints ?? 3000, t.everyMetres);
+  return describeRecording(open, t, post);
+}
+
+/** Describe every station of an E57 survey (describeRecording). @param {Wasm} wasm @param {SurveyTask} t @param {(p: BagPartial, transfer: Transferable[]) => void} post */
+export function describeSurvey(wasm, t, post) {
+  const open = (/** @type {Params} */ params) => new wasm.E57Scans(t.file.size, sliceReader(t.file), t.name, params, undefined, t.previewPoints ?? 3000);
+  return describeRecording(open, t, post);
 }
 
 /** A described cloud as plain data. @param {import('./pkg/placecat.js').DescribedScan} scan @returns {ScanResult} */
@@ -52,24 +65,27 @@ function resultOf(scan) {
   return { ...scanResult(scan), pose: scan.pose() ?? undefined };
 }
 
-/** The next cloud, undefined after the last; throws for a cloud that cannot be read. @param {import('./pkg/placecat.js').BagClouds} clouds */
+/** The next scan, undefined after the last; throws for one that cannot be read. @param {Recording} clouds */
 const nextOf = (clouds) => {
   const scan = clouds.next();
   return scan ? scoped(scan, resultOf) : undefined;
 };
 
 /**
- * Describe the kept clouds of a bag, posting each (or its error) as a
- * partial reply. With `byPreset` (the first input of a new data set), the
- * first cloud read decides the preset by its share of far points (its
- * preview's), as a file does (describe.js); when that is not indoor the
- * bag is opened again with the chosen preset and its clouds read again from
- * the first, whose errors are not posted twice. Returns what the page shows
- * of the bag. A bag that cannot be opened throws (its message names it).
- * @param {Wasm} wasm @param {BagTask} t @param {(p: BagPartial, transfer: Transferable[]) => void} post
+ * Describe the scans of a recording (a bag's kept clouds, a survey's
+ * stations), posting each (or its error) as a partial reply. With
+ * `byPreset` (the first input of a new data set), the first scan read
+ * decides the preset by its share of far points (its preview's), as a file
+ * does (describe.js); when that is not indoor the recording is opened again
+ * with the chosen preset and its scans read again from the first, whose
+ * errors are not posted twice. Returns what the page shows of it. One that
+ * cannot be opened throws (its message names the file).
+ * @param {(params: Params) => Recording} open
+ * @param {{params: Params, byPreset?: Record<import('./suggest.js').SuggestedPreset, Params>}} t
+ * @param {(p: BagPartial, transfer: Transferable[]) => void} post
  */
-export function describeBag(wasm, t, post) {
-  let clouds = open(wasm, t, t.byPreset?.indoor ?? t.params);
+function describeRecording(open, t, post) {
+  let clouds = open(t.byPreset?.indoor ?? t.params);
   /** @type {{preset?: import('./suggest.js').SuggestedPreset, far?: number}} */
   const chosen = {};
   let kept = 0, failed = 0, tries = 0;
@@ -97,7 +113,7 @@ export function describeBag(wasm, t, post) {
         chosen.preset = suggestPreset(chosen.far);
         if (chosen.preset !== 'indoor') {
           clouds.free();
-          clouds = open(wasm, t, t.byPreset[chosen.preset]);
+          clouds = open(t.byPreset[chosen.preset]);
           // Read again up to this cloud; the errors before it were posted.
           for (let skip = failed + tries - 1; skip > 0; skip--) {
             try { clouds.next()?.free(); } catch { /* posted on the first pass */ }
@@ -113,7 +129,7 @@ export function describeBag(wasm, t, post) {
       kept++;
       post({ scan, ...progress() }, [scan.preview.buffer, ...(scan.site ? [scan.site.buffer] : [])]);
     }
-    return { bag: true, topic: clouds.topic, kept, failed, total: clouds.total, ...chosen };
+    return { recording: true, topic: clouds.topic, kept, failed, total: clouds.total, ...chosen };
   } finally {
     clouds.free();
   }

@@ -61,8 +61,8 @@ export async function describeInputs(pool, inputs, { params, byPreset }, on) {
   /** @param {number} i @param {any} r */
   const finished = (i, r) => {
     setMet(i, units[i]);
-    if (r.far !== undefined) measured ??= { far: r.far, from: r.bag ? inputs[i].name : r.name };
-    if (r.bag) return (bags[i] = r);
+    if (r.far !== undefined) measured ??= { far: r.far, from: r.recording ? inputs[i].name : r.name };
+    if (r.recording) return (bags[i] = r);
     results[i] = r;
     on.onResult(i, r, 0);
   };

@@ -5,6 +5,8 @@
 export const isBag = (name) => /\.(bag|mcap|db3)$/i.test(name);
 /** A file of one scan the wasm reader takes (src/io: PLY, PCD, KITTI .bin, LAS/LAZ, single-scan E57), or a bag. */
 export const isScan = (name) => /\.(ply|pcd|bin|las|laz|e57)$/i.test(name) || isBag(name);
+/** An E57 file: a survey of one or more scans (bagreader.js). */
+export const isSurvey = (name) => /\.e57$/i.test(name);
 export const isTruth = (name) => /(^|\/)labels\.csv$/i.test(name);
 export const isPoses = (name) => /poses[^/]*\.(txt|csv)$/i.test(name) || /(^|\/)(trajectory|groundtruth)[^/]*\.(txt|csv)$/i.test(name);
 

@@ -2,7 +2,7 @@
 // state and returns a new one (the old is never changed), with no DOM and
 // no wasm. What the views show is derived here too.
 import { fileRows, formatCsv } from './csv.js';
-import { baseName } from './files.js';
+import { baseName, isSurvey } from './files.js';
 import { defaultScale } from './scale.js';
 import { siteSubsample, OUTDOOR_PRESET } from './suggest.js';
 
@@ -104,6 +104,8 @@ export function taskOf(input, params) {
     const { topic, every, everyMetres } = input.bag;
     return { type: 'bag', file: input.file, name: input.name, topic, every, everyMetres, params };
   }
+  // An E57 file is a survey (one scan a station, each with its pose); one of a single station too.
+  if (input.file && isSurvey(input.name)) return { type: 'survey', file: input.file, name: input.name, params };
   return { type: 'describe', file: input.file, name: input.name, params };
 }
 

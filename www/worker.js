@@ -4,11 +4,11 @@
 // simulates one demo scan, computes rows of the Delta matrix or reference
 // sets of the choice of categories (matrix.js), or classifies one scan
 // with a model; the engine does the wasm work. A ROS bag is read in
-// slices and its clouds posted one at a time as partial replies
-// (bagreader.js).
+// slices and its clouds posted one at a time as partial replies, and so is
+// an E57 survey's stations (bagreader.js).
 import init, * as wasm from './pkg/placecat.js';
 import { Describer } from './engine.js';
-import { bagTopics, describeBag } from './bagreader.js';
+import { bagTopics, describeBag, describeSurvey } from './bagreader.js';
 
 const ready = init().then(() => new Describer(wasm));
 
@@ -24,6 +24,7 @@ async function run(task, partial, clock, file) {
   const describer = await ready;
   describer.taskArrives(task.type);
   if (task.type === 'bag') return describeBag(wasm, task, partial);
+  if (task.type === 'survey') return describeSurvey(wasm, task, partial);
   if (task.type === 'bagTopics') return bagTopics(wasm, task.file, task.name);
   if (task.type === 'describe') {
     const bytes = new Uint8Array(await /** @type {Promise<ArrayBuffer>} */ (file));

@@ -56,8 +56,9 @@ test('LAS, LAZ and E57 through the file input: read as the CLI reads them; a geo
     'truncated.las': /^truncated\.las: LAS\/LAZ: the header declares 700 points of 34 bytes from byte 227, but the file has 23027 bytes \(truncated\?\)$/,
     'corrupt_chunk.laz': /^corrupt_chunk\.laz: LAS\/LAZ: LAZ data damaged or cut short in points 0\.\.3000 of 3000/,
     'truncated.e57': /^truncated\.e57: E57: .*truncated/,
-    // 300 points in one plane: read, but too few for a descriptor (the CLI says the same).
-    'single.e57': /^single\.e57: no descriptor: no classified voxel/,
+    // A survey of one station, 300 points in one plane: read, but too few
+    // for a descriptor (the CLI says the same, naming the station).
+    'single.e57': /^single\.e57:Scan 0: no descriptor: no classified voxel/,
   };
   const files = [...good, ...Object.keys(refused)].map((f) => join(SURVEY, f));
   const real = ['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd'].map((f) => join(REAL, f));
@@ -69,5 +70,24 @@ test('LAS, LAZ and E57 through the file input: read as the CLI reads them; a geo
   assert.equal(errors.length, Object.keys(refused).length, errors.join('\n'));
   const described = good.length + real.length;
   assert.match(await h.page.textContent('#cluster-status'), new RegExp(`from ${described} scans`));
+  assert.deepEqual(h.problems, []);
+});
+
+test('an E57 survey is one input of many scans: every station described with its pose, drawn as a site', async () => {
+  const survey = join(ROOT, 'tests/data/survey/survey.e57');
+  await afterRun(h.page, () => h.page.setInputFiles('#files', [survey]));
+  assert.deepEqual(await h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent)), []);
+  assert.match(await h.page.textContent('#progress-text'), /^4 \/ 4 scans/);
+  assert.match(await h.page.textContent('#cluster-status'), /from 4 scans/);
+  // The stations' poses (pye57 wrote them; tests/it/survey.rs reads the same) make the map.
+  assert.match(await h.page.textContent('#map-caption'), /Trajectory map/);
+  // Each station by the name the CLI gives it (FILE:station, a repeated name with its index).
+  const [download] = await Promise.all([h.page.waitForEvent('download'), h.page.click('#export-csv')]);
+  const files = readFileSync(await download.path(), 'utf8').trim().split('\n').slice(1).map((r) => r.split(',')[0]);
+  assert.deepEqual(files, ['survey.e57:hall', 'survey.e57:office', 'survey.e57:hall (scan 2)', 'survey.e57:store']);
+  // Parked first: a scroll slides the legend under a resting pointer, and its row is highlighted.
+  await h.page.mouse.move(1, 1);
+  await h.page.locator('#map').scrollIntoViewIfNeeded();
+  await h.page.screenshot({ path: join(ARTIFACTS, 'e57-survey.png') });
   assert.deepEqual(h.problems, []);
 });

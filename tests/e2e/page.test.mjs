@@ -194,11 +194,11 @@ test('the categories CSV survives its own import: export, import, export give th
 test('KITTI scans with a poses file draw a trajectory map', async () => {
   const dir = join(REAL, 'kitti00');
   // The pointer rests where the last test clicked (Export CSV, under the
-  // legend), and the new run's shorter page moves other things under it. A
-  // category highlighted by hovering (a legend row, the dendrogram) greys
-  // the others on the map; once in CI the first category's colour was gone
-  // from it (not reproduced here; a highlight is the only way it can go).
-  // Parked in the page's corner, the pointer is over nothing that highlights.
+  // legend). Scrolling the map into view slid a legend row under it, Chrome
+  // highlighted that row's category on hover, and the map greyed the rest:
+  // once in CI the first category's colour was gone (seen again in a
+  // screenshot of bad_files.test.mjs). Parked in the page's corner, over
+  // nothing that highlights, and the map read before any scroll.
   await h.page.mouse.move(1, 1);
   await afterRun(h.page, () => h.page.setInputFiles('#files', ['000094.bin', '000095.bin', '000198.bin', '000199.bin', 'poses.txt'].map((f) => join(dir, f))));
   assert.match(await h.page.textContent('#map-caption'), /Trajectory map/);

@@ -14,7 +14,7 @@ function bagRun(task, onPartial) {
   onPartial({ error: `${task.name}: topic /points: cloud 1: truncated`, met: 2, total: 5 });
   onPartial({ scan: { name: `${task.name}:/points:000002` }, met: 3, total: 5 });
   onPartial({ scan: { name: `${task.name}:/points:000004` }, met: 5, total: 5 });
-  return { bag: true, topic: '/points', kept: 3, failed: 1, total: 5, ...(task.byPreset ? { far: 0.02, preset: 'indoor' } : {}) };
+  return { recording: true, topic: '/points', kept: 3, failed: 1, total: 5, ...(task.byPreset ? { far: 0.02, preset: 'indoor' } : {}) };
 }
 
 /** A pool whose workers fail on bad.ply and measure 30 % far points on the others. */
