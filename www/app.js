@@ -12,7 +12,7 @@ import * as S from './state.js';
 import { loadNames, saveNames, datasetId } from './store.js';
 import { beginSession, saveScans, lastSession } from './session.js';
 import { Batch } from './batch.js';
-import { dropZone, filesFromInput, sortFiles, baseName } from './files.js';
+import { dropZone, filesFromInput, sortFiles, baseName, isSurvey } from './files.js';
 import { chooseBagReading, rethinned, showBags, onThinning } from './bag.js';
 import { stage, stageSince, clearStages } from './stages.js';
 import { matrixInWorkers, referencesInWorkers, tailKey, oneAtATime } from './matrix.js';
@@ -166,8 +166,10 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   pool.clocks = [];
   const began = performance.now();
   const total = inputs.length;
-  // A bag counts its clouds read; any other input counts one.
+  // A bag counts its clouds read; any other input counts one, a survey its stations.
   const unit = inputs.some((i) => i.bag) ? 'clouds' : 'scans';
+  // With a recording (a bag, a survey) among the inputs, `total` counts inputs, not scans.
+  const recordings = inputs.some((i) => i.bag || isSurvey(i.name));
   view.progress(0, total, 'running', unit);
   /** @type {Promise<unknown> | null} the session starts once the preset is known */
   let session = null;
@@ -184,7 +186,7 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
     if (!current()) return;
     if (saves.length) {
       // IndexedDB runs transactions on one store in the order they were made: the session's comes first.
-      session ??= beginSession(datasetId, { total, preset: preset(), params: state.params, demo });
+      session ??= beginSession(datasetId, { total, counts: recordings ? 'inputs' : 'scans', preset: preset(), params: state.params, demo });
       saved = Promise.all([saved, saveScans(datasetId, saves).catch((e) => current() && addError('saving', e.message))]);
     }
     const show = shown;
@@ -401,7 +403,8 @@ async function restore() {
   if (!last) return;
   state = S.restoreSession(state, last, loadNames(last.datasetId));
   setPreset(last.preset ?? preset());
-  $('info').textContent = `Restored ${state.scans.length} of ${last.total} scans from the last session. Load the files again to describe the rest.`;
+  const of = last.counts === 'inputs' ? `scans of ${last.total} ${last.total === 1 ? 'input' : 'inputs'}` : `of ${last.total} scans`;
+  $('info').textContent = `Restored ${state.scans.length} ${of} from the last session. Load the files again to describe the rest.`;
   buildSet();
 }
 

@@ -8,6 +8,7 @@
 // the user can change the preset (the whole set is then described again).
 // If the first scan fails, the next one decides. For the demo the scene's
 // preset is known; its first scan is only measured, to show the suggestion.
+// A recording (a bag, an E57 survey) is one input of many scans.
 import { suggestPreset } from './suggest.js';
 import { taskOf } from './state.js';
 

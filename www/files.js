@@ -71,7 +71,8 @@ export function filesFromInput(list) {
  * @param {string} name
  */
 export function baseName(name) {
-  const bag = /\.(bag|mcap):/i.exec(name);
+  // A recording's scans keep their suffix whole (a topic, a station named "Level 1/Scan 3").
+  const bag = /\.(bag|mcap|e57):/i.exec(name);
   const end = bag ? bag.index : name.length;
   return name.slice(name.lastIndexOf('/', end) + 1);
 }

@@ -369,10 +369,10 @@ export function truthLabels(s) {
  */
 export function posesOf(s) {
   if (s.demo) return { poses: s.scans.map((r) => r.pose), usePoses: s.demo !== 'indoor', drawSite: true, note: '' };
-  // Bag clouds carry the poses the bag recorded (odometry or tf), with headings.
+  // A recording's scans carry the poses it recorded (a bag's odometry or tf, a survey's stations), with headings.
   const own = s.scans.filter((r) => r.pose).length;
   if (own) {
-    const note = own < s.scans.length ? `poses: ${s.scans.length - own} of ${s.scans.length} scans have no pose in their bag; no map` : '';
+    const note = own < s.scans.length ? `poses: ${s.scans.length - own} of ${s.scans.length} scans have no pose in their recording; no map` : '';
     return { poses: s.scans.map((r) => r.pose), usePoses: own === s.scans.length, drawSite: true, note };
   }
   const p = s.poses;

@@ -33,6 +33,7 @@ test('bag types as ROS 1 and rosbag2 spell them', () => {
 test('a bag cloud keeps its topic in its name; only the folders before the bag go', () => {
   assert.equal(baseName('data/run.bag:/os/points:000012'), 'run.bag:/os/points:000012');
   assert.equal(baseName('a/b/c.pcd'), 'c.pcd');
+  assert.equal(baseName('site/s.e57:Level 1/Scan 3'), 's.e57:Level 1/Scan 3');
   const r = (name, pose) => ({ name, pose, preview: new Float32Array(3) });
   const s = S.finishRun(S.initialState(), [[r('run.bag:/p:000000', { position: [0, 0, 0], yaw: 0 }), r('run.bag:/p:000002', { position: [1, 0, 0], yaw: 0 })], undefined]);
   assert.deepEqual(s.scans.map((x) => x.name), ['run.bag:/p:000000', 'run.bag:/p:000002']);
