@@ -211,7 +211,7 @@ async function describeAll({ datasetId, demo, inputs } = state, { suggest = fals
   if (suggestion) state = S.withSuggestion(state, suggestion);
   state = S.finishRun(state, results);
   view.progress(done, all, done < all ? 'cancelled' : 'done', unit);
-  if (unit === 'clouds') showBags(inputs, bags);
+  if (recordings) showBags(inputs, bags);
   loadSet();
   // A cancelled run leaves the workers alone: the set computes its matrix.
   if (done === all) await tailFromWorkers(current);

@@ -145,15 +145,19 @@ function askTopic(name, clouds) {
 }
 
 /**
- * Say how each bag is read and, after the run, what was kept of it.
+ * Say how each bag is read and, after the run, what was kept of it (and of
+ * an E57 survey, what was described: only recordings have infos).
  * @param {BagInput[]} inputs @param {(BagInfo | undefined)[]} [infos] by input
  */
 export function showBags(inputs, infos) {
   const after = infos !== undefined;
   infos ??= [];
   const lines = inputs.flatMap((input, i) => {
-    if (!input.bag) return [];
     const info = infos[i];
+    if (!input.bag) {
+      const failed = info?.failed ? `, ${info.failed} could not be read or described` : '';
+      return info ? [`${input.name}: ${info.kept} of ${info.total} scans described${failed}`] : [];
+    }
     if (after && !info) return [`${input.name}: not read (see the skipped files)`];
     const topic = info?.topic ?? input.bag.topic ?? 'its PointCloud2 topic';
     const kept = info ? `: ${info.kept} of ${info.total} clouds kept` : '';

@@ -41,7 +41,11 @@ impl E57Scans {
         preview_points: Option<usize>,
     ) -> WasmResult<E57Scans> {
         let params = params_from_js(params.unwrap_or_default(), preset)?;
-        let source = SourceReader::new(JsSource::new(size, read, name, Error::E57)?);
+        // A failed read is an I/O error inside the E57 reader's own ("E57:
+        // Failed to read E57: ... I/O: read(0, 1024) threw: ..."), not a
+        // second "E57:".
+        let io = |m: String| Error::Io(std::io::Error::other(m));
+        let source = SourceReader::new(JsSource::new(size, read, name, io)?);
         Ok(E57Scans {
             scans: SurveyScans::open(source, name, ReadLimits::default())?,
             params,

@@ -79,6 +79,7 @@ test('an E57 survey is one input of many scans: every station described with its
   assert.deepEqual(await h.page.$$eval('#errors li', (li) => li.map((x) => x.textContent)), []);
   assert.match(await h.page.textContent('#progress-text'), /^4 \/ 4 scans/);
   assert.match(await h.page.textContent('#cluster-status'), /from 4 scans/);
+  assert.equal(await h.page.textContent('#bag-note'), 'survey.e57: 4 of 4 scans described');
   // The stations' poses (pye57 wrote them; tests/it/survey.rs reads the same) make the map.
   assert.match(await h.page.textContent('#map-caption'), /Trajectory map/);
   // Each station by the name the CLI gives it (FILE:station, a repeated name with its index).

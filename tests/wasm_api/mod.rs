@@ -583,6 +583,27 @@ fn an_e57_survey_streams_through_a_read_function_into_described_stations_with_po
         .unwrap(),
     );
     assert!(e.starts_with("x.e57: E57: "), "{e}");
+    // A read that throws (a File gone from the disk) is an I/O error inside
+    // the E57 reader's message, with the call and the JS message, under
+    // one "E57:" prefix.
+    let throws = Closure::<dyn Fn(f64, f64) -> Result<JsValue, JsValue>>::new(|_: f64, _: f64| {
+        Err(js_sys::Error::new("the file is gone").into())
+    });
+    let e = message(
+        E57Scans::new(
+            size,
+            throws.into_js_value().unchecked_into(),
+            "gone.e57",
+            None,
+            None,
+            None,
+        )
+        .err()
+        .unwrap(),
+    );
+    assert!(e.starts_with("gone.e57: E57: "), "{e}");
+    assert!(e.contains("threw: the file is gone"), "{e}");
+    assert!(!e.contains("E57: E57:") && e.contains("I/O: read(0, "), "{e}");
 }
 
 /// The corridor bag (written by the Python `rosbags` package, see
