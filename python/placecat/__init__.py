@@ -21,6 +21,7 @@ from ._placecat import (
     Descriptor,
     Model,
     PlacecatError,
+    Scans,
     Tree,
     describe,
     describe_bytes,
@@ -30,6 +31,7 @@ from ._placecat import (
     presets,
     read,
     read_bytes,
+    scans,
 )
 
 __all__ = [
@@ -39,6 +41,7 @@ __all__ = [
     "Descriptor",
     "Model",
     "PlacecatError",
+    "Scans",
     "Tree",
     "describe",
     "describe_bytes",
@@ -48,4 +51,5 @@ __all__ = [
     "presets",
     "read",
     "read_bytes",
+    "scans",
 ]

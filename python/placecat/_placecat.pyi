@@ -173,3 +173,31 @@ class Model:
         """name, label, distance, relative."""
     def classify_file(self, path: _Path, *, lenient: bool = False) -> Dict[str, Any]: ...
     def __eq__(self, other: object) -> bool: ...
+
+class Scans:
+    """The scans of a recording, one at a time: dicts with "name"
+    (``run.bag:/points:000042``, ``site.e57:hall``: the file's base name),
+    "points" ((N, 3) float32, the sensor's frame), "pose" (dict or None) and
+    "stamp"; unreadable ones are skipped with a warning and listed in
+    ``errors``, each naming the file."""
+
+    @property
+    def total(self) -> int: ...
+    @property
+    def met(self) -> int: ...
+    @property
+    def topic(self) -> Optional[str]: ...
+    @property
+    def errors(self) -> List[str]: ...
+    def __iter__(self) -> "Scans": ...
+    def __next__(self) -> Dict[str, Any]: ...
+
+def scans(
+    path: _Path,
+    *,
+    topic: Optional[str] = None,
+    every: int = 1,
+    every_metres: Optional[float] = None,
+    max_points: Optional[int] = None,
+) -> Scans:
+    """The scans of a ROS bag (.bag, .mcap) or an E57 survey, one at a time."""

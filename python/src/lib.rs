@@ -10,6 +10,7 @@ mod collection;
 mod convert;
 mod descriptor;
 mod model;
+mod recording;
 
 use convert::{core_err, params_from_py, to_py};
 use numpy::{PyArray1, PyArrayMethods};
@@ -175,6 +176,7 @@ fn _placecat(m: &Bound<'_, PyModule>) -> PyResult<()> {
     descriptor::register(m)?;
     collection::register(m)?;
     model::register(m)?;
+    recording::register(m)?;
     m.add("MATRIX_LIMIT", placecat::collection::MATRIX_LIMIT)?;
     m.add("MAX_RESTARTS", placecat::cluster::MAX_RESTARTS)?;
     Ok(())

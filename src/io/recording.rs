@@ -4,6 +4,8 @@
 //! and the thinning along the path need no separate poses file.
 
 use super::poses::Pose;
+#[cfg(not(target_arch = "wasm32"))]
+use crate::error::{Error, Result};
 
 /// One scan taken out of a recording.
 #[derive(Debug, Clone, PartialEq)]
@@ -18,4 +20,101 @@ pub struct RecordedScan {
     pub stamp: Option<f64>,
     /// Pose of the sensor in the recording's world frame, where known.
     pub pose: Option<Pose>,
+}
+
+/// A recording on disk opened for reading one scan at a time: a ROS bag's
+/// cloud topic or an E57 survey's stations (native only; the page reads
+/// both through [`super::source::ByteSource`]s of its own). Iterate it:
+/// each item is a scan, or an error naming the file and the scan, after
+/// which the iteration goes on.
+#[cfg(not(target_arch = "wasm32"))]
+pub enum Recording {
+    /// A ROS 1 `.bag` or rosbag2 `.mcap`, one cloud topic.
+    Bag(Box<super::bag::BagReader<super::bag::FileSource>>),
+    /// An E57 survey, read through a buffer.
+    Survey(Box<super::e57::SurveyScans<std::io::BufReader<std::fs::File>>>),
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+impl Recording {
+    /// Open `path`: an E57 survey by its signature (whatever its name), a
+    /// bag by its name (`.bag`, `.mcap`). `opts` chooses a bag's topic and
+    /// thinning; a survey is read station by station, so a topic or a
+    /// thinning for it is an error, as is a file that is neither, or
+    /// rosbag2's SQLite storage. Errors name the path.
+    pub fn open_path(path: &std::path::Path, opts: super::bag::BagOptions) -> Result<Self> {
+        use std::io::{Read, Seek};
+        let name = path.display().to_string();
+        let in_file = |e: std::io::Error| Error::from(e).in_file(&name);
+        let mut file = std::fs::File::open(path).map_err(in_file)?;
+        let mut head = [0u8; 8];
+        let is_e57 = file.read_exact(&mut head).is_ok() && super::e57::looks_like_e57(&head);
+        if is_e57 {
+            if opts.topic.is_some() || opts.every != 1 || opts.every_metres.is_some() {
+                return Err(Error::InvalidParameter(format!(
+                    "{name}: an E57 survey is read station by station; a topic, every and \
+                     every_metres are a bag's"
+                )));
+            }
+            // The sniff moved the file on; the survey's header is read from byte 0.
+            file.rewind().map_err(in_file)?;
+            let reader = std::io::BufReader::with_capacity(1 << 20, file);
+            let scans = super::e57::SurveyScans::open(reader, &name, opts.limits)?;
+            return Ok(Recording::Survey(Box::new(scans)));
+        }
+        let lower = name.to_ascii_lowercase();
+        if lower.ends_with(".db3") {
+            return Err(Error::Bag(
+                "rosbag2 SQLite storage (.db3) is not read, only MCAP: convert the bag \
+                 (`ros2 bag convert` with storage_id: mcap) and give the .mcap"
+                    .into(),
+            )
+            .in_file(&name));
+        }
+        if lower.ends_with(".bag") || lower.ends_with(".mcap") {
+            let reader = super::bag::BagReader::open_path(path, opts)?;
+            return Ok(Recording::Bag(Box::new(reader)));
+        }
+        Err(Error::InvalidParameter(format!(
+            "{name}: not a recording (an E57 survey, a ROS .bag or a rosbag2 .mcap); a scan \
+             file is read whole"
+        )))
+    }
+
+    /// Scans in the recording: a bag's clouds on its topic (before
+    /// thinning), a survey's stations.
+    pub fn total(&self) -> u64 {
+        match self {
+            Recording::Bag(b) => b.topic_len(),
+            Recording::Survey(s) => s.len() as u64,
+        }
+    }
+
+    /// Scans met so far, kept or not, read or not.
+    pub fn met(&self) -> u64 {
+        match self {
+            Recording::Bag(b) => b.clouds_met(),
+            Recording::Survey(s) => s.met() as u64,
+        }
+    }
+
+    /// The cloud topic read (a bag), or None (a survey).
+    pub fn topic(&self) -> Option<&str> {
+        match self {
+            Recording::Bag(b) => Some(b.topic()),
+            Recording::Survey(_) => None,
+        }
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+impl Iterator for Recording {
+    type Item = Result<RecordedScan>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        match self {
+            Recording::Bag(b) => b.next(),
+            Recording::Survey(s) => s.next(),
+        }
+    }
 }

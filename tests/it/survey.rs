@@ -472,6 +472,81 @@ mod native {
     }
 
     #[test]
+    fn a_recording_on_disk_is_a_survey_by_its_signature_or_a_bag_by_its_name() {
+        use placecat::io::bag::BagOptions;
+        use placecat::io::poses::Pose;
+        use placecat::io::recording::Recording;
+        let open = |p: &std::path::Path, opts| Recording::open_path(p, opts);
+        // The survey as read_scans_path reads it, the counts as it goes.
+        let mut survey = open(&path("survey.e57"), BagOptions::default()).unwrap();
+        assert_eq!((survey.total(), survey.met(), survey.topic()), (4, 0, None));
+        let first = survey.next().unwrap().unwrap();
+        assert_eq!(survey.met(), 1);
+        let rest: Vec<RecordedScan> = survey.map(|s| s.unwrap()).collect();
+        let whole = read_scans_path(&path("survey.e57"), &ReadLimits::default()).unwrap();
+        // Bit for bit (the office's NaN points, no return, are never equal as floats).
+        let bits = |scans: &[RecordedScan]| -> Vec<(String, Option<Pose>, Vec<u32>)> {
+            let bits = |s: &RecordedScan| s.points.iter().flatten().map(|v| v.to_bits()).collect();
+            scans
+                .iter()
+                .map(|s| (s.name.clone(), s.pose.clone(), bits(s)))
+                .collect()
+        };
+        let read: Vec<RecordedScan> = std::iter::once(first).chain(rest).collect();
+        // Named by the file's base name, as a bag's clouds are (and the page
+        // names them); read_scans_path names them by the path given.
+        let mut whole = whole;
+        let full = path("survey.e57").display().to_string();
+        for s in &mut whole {
+            s.name = s.name.replacen(&full, "survey.e57", 1);
+            if let Some(p) = &mut s.pose {
+                p.name = p.name.as_ref().map(|n| n.replacen(&full, "survey.e57", 1));
+            }
+        }
+        assert_eq!(read[1].name, "survey.e57:office");
+        assert_eq!(bits(&read), bits(&whole));
+        // A bag by its name, its topic's clouds; thinning as the bag reader's.
+        let bags = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/bags"));
+        let bag = open(&bags.join("ros1_corridor.bag"), BagOptions::default()).unwrap();
+        assert_eq!((bag.total(), bag.topic()), (2, Some("/points")));
+        assert_eq!(bag.filter(|c| c.is_ok()).count(), 2);
+        let every = BagOptions {
+            every: 2,
+            ..BagOptions::default()
+        };
+        assert_eq!(
+            open(&bags.join("ros1_corridor.bag"), every.clone())
+                .unwrap()
+                .count(),
+            1
+        );
+        // Refusals name the file and say why.
+        let refused = |p: PathBuf, opts, why: &str| {
+            let e = open(&p, opts).err().expect("refused").to_string();
+            assert!(
+                e.contains(&p.display().to_string()) && e.contains(why),
+                "{e}"
+            );
+        };
+        refused(path("survey.e57"), every, "read station by station");
+        refused(path("truncated.e57"), BagOptions::default(), "truncated");
+        refused(
+            path("las14_fmt6.las"),
+            BagOptions::default(),
+            "not a recording",
+        );
+        refused(bags.join("walk.db3"), BagOptions::default(), "No such file");
+        let db3 = std::env::temp_dir().join(format!("placecat-{}.db3", std::process::id()));
+        std::fs::write(&db3, b"SQLite format 3\0").unwrap();
+        refused(
+            db3.clone(),
+            BagOptions::default(),
+            "SQLite storage (.db3) is not read",
+        );
+        std::fs::remove_file(db3).unwrap();
+    }
+
+    #[test]
     fn damaged_laz_never_panics_through_the_reader() {
         // The laz crate asserts on some damaged input (seen with random byte
         // changes: an arithmetic decoder symbol out of range, an overflow in
