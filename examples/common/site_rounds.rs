@@ -90,18 +90,35 @@ pub fn site(scene: SceneKind, seed: u64) -> Res<Site> {
     } else {
         ("warehouse", DescriptorParams::indoor())
     };
-    let sim = Simulation::new(&SimParams::new(scene, seed))?;
-    let descriptors: Vec<Descriptor> = (0..sim.len())
-        .into_par_iter()
-        .map(|i| describe(&sim.scan(i).points, &params))
-        .collect::<placecat::Result<_>>()?;
-    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
+    let (truth, mut described) = described_site(scene, seed, std::slice::from_ref(&params))?;
     Ok(Site {
         name,
         params,
         truth,
-        descriptors,
+        descriptors: described.remove(0),
     })
+}
+
+/// `placecat simulate --scene S --seed N`'s scans described with each of
+/// `params` (simulated once), and their true kinds.
+pub fn described_site(
+    scene: SceneKind,
+    seed: u64,
+    params: &[DescriptorParams],
+) -> Res<(Vec<String>, Vec<Vec<Descriptor>>)> {
+    let sim = Simulation::new(&SimParams::new(scene, seed))?;
+    let per_scan: Vec<Vec<Descriptor>> = (0..sim.len())
+        .into_par_iter()
+        .map(|i| {
+            let points = sim.scan(i).points;
+            params.iter().map(|p| describe(&points, p)).collect()
+        })
+        .collect::<placecat::Result<_>>()?;
+    let by_preset = (0..params.len())
+        .map(|j| per_scan.iter().map(|s| s[j].clone()).collect())
+        .collect();
+    let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
+    Ok((truth, by_preset))
 }
 
 /// One part of a round (development or test seeds): the sites, then the
@@ -130,12 +147,34 @@ pub fn run<F, S>(
     family_seeds: &[u64],
     site_seeds: &[u64],
     what: &str,
+    site_set: impl FnMut(SceneKind, u64) -> Res<S>,
+    family_set: impl FnMut(&Family, Sensor, u64, &[String]) -> Res<F>,
+) -> Res<Part<F, S>> {
+    let scenes = [SceneKind::Outdoor, SceneKind::Warehouse];
+    run_on(
+        &scenes,
+        presets,
+        family_seeds,
+        site_seeds,
+        what,
+        site_set,
+        family_set,
+    )
+}
+
+/// [`run`] on the sites of `scenes` only.
+pub fn run_on<F, S>(
+    scenes: &[SceneKind],
+    presets: &[(String, Vec<String>)],
+    family_seeds: &[u64],
+    site_seeds: &[u64],
+    what: &str,
     mut site_set: impl FnMut(SceneKind, u64) -> Res<S>,
     family_set: impl FnMut(&Family, Sensor, u64, &[String]) -> Res<F>,
 ) -> Res<Part<F, S>> {
     let t0 = std::time::Instant::now();
     let mut sites = vec![];
-    for scene in [SceneKind::Outdoor, SceneKind::Warehouse] {
+    for &scene in scenes {
         for &seed in site_seeds {
             eprintln!(
                 "{what} site {scene:?} seed {seed} ({:.0} s)",
