@@ -162,6 +162,7 @@ assert.equal(scans[0].pose(), null, 'a file has no pose');
 // The hand-written literal types name only values the API takes.
 const literals = (name) => dts.match(new RegExp(`export type ${name} = ([^;]*);`))[1].split('|').map((x) => JSON.parse(x.trim()));
 for (const p of literals('Preset')) assert.equal(pc.presetParams(p).preset, p);
+assert.deepEqual(literals('Preset'), pc.presetNotes().map((n) => n.name), 'the Preset type names every preset, in the core\'s order');
 for (const s of literals('Seeding')) assert.equal(set.kmeans(2, s, 0).labels.length, 3, s);
 console.log('the .d.ts interfaces match the objects returned');
 JS

@@ -361,3 +361,13 @@ test('a worker frees the set of a tail when a task of another kind comes, or whe
   assert.equal(d.set.value, null, 'freed once no task came for 50 ms');
   d.dispose();
 });
+
+test('the page offers every preset of the core, each with its one-line note as the option title', async () => {
+  const { readFile } = await import('node:fs/promises');
+  const html = await readFile(new URL('../../www/index.html', import.meta.url), 'utf8');
+  const menu = html.slice(html.indexOf('<select id="preset">'), html.indexOf('</select>', html.indexOf('<select id="preset">')));
+  const unescape = (/** @type {string} */ t) => t.replace(/&quot;/g, '"').replace(/&amp;/g, '&');
+  const options = [...menu.matchAll(/<option value="([^"]+)" title="([^"]*)"/g)].map((m) => [m[1], unescape(m[2])]);
+  const notes = wasm.presetNotes().map((/** @type {{name: string, note: string}} */ n) => [n.name, n.note]);
+  assert.deepEqual(options, notes);
+});

@@ -603,7 +603,10 @@ fn an_e57_survey_streams_through_a_read_function_into_described_stations_with_po
     );
     assert!(e.starts_with("gone.e57: E57: "), "{e}");
     assert!(e.contains("threw: the file is gone"), "{e}");
-    assert!(!e.contains("E57: E57:") && e.contains("I/O: read(0, "), "{e}");
+    assert!(
+        !e.contains("E57: E57:") && e.contains("I/O: read(0, "),
+        "{e}"
+    );
 }
 
 /// The corridor bag (written by the Python `rosbags` package, see
