@@ -855,6 +855,11 @@ const FIFTH_ROUND_TEXT: &str = include_str!("common/sites_fifth_round.md");
 /// stay the paper's distance.
 const SIXTH_ROUND_TEXT: &str = include_str!("common/sites_sixth_round.md");
 
+/// Issues 14 and 18's seventh round: range intervals from 2 m
+/// (`examples/near_ranges.rs`, docs/near-ranges.md); the tables of section
+/// 4 stay the paper's outdoor preset.
+const SEVENTH_ROUND_TEXT: &str = include_str!("common/sites_seventh_round.md");
+
 /// The outdoor site's rows of the second round, as measured then: the
 /// third round changed the site, so they cannot be computed again.
 const SECOND_ROUND_OUTDOOR: &str = include_str!("common/sites_second_round_outdoor.md");
@@ -1047,12 +1052,13 @@ fn render_sensitivity(out: &mut String, rows: &[SensitivityRow]) -> Fmt {
 fn render_sites(out: &mut String, sites: &[SiteSection]) -> Fmt {
     writeln!(
         out,
-        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n\n{}\n\n{}\n\n{}\n\n{}\n",
+        "\n{SITES_HEADING}\n\n{SITES_TEXT}\n\n{}\n\n{}\n\n{}\n\n{}\n\n{}\n\n{}\n",
         THIRD_ROUND_TEXT.trim(),
         FOURTH_ROUND_TEXT.trim(),
         BOUNDARY_ERRORS_TEXT.trim(),
         FIFTH_ROUND_TEXT.trim(),
-        SIXTH_ROUND_TEXT.trim()
+        SIXTH_ROUND_TEXT.trim(),
+        SEVENTH_ROUND_TEXT.trim()
     )?;
     for site in sites {
         render_site(out, site)?;

@@ -73,6 +73,13 @@ fn nearest_scan_is_from_the_same_place_outdoor_hellinger_preset() {
     check(DescriptorParams::outdoor_hellinger());
 }
 
+/// The seventh round's outdoor preset (ranges from 2 m, Hellinger): 18 of
+/// 18 (docs/near-ranges.md).
+#[test]
+fn nearest_scan_is_from_the_same_place_outdoor_near_preset() {
+    check(DescriptorParams::outdoor_near());
+}
+
 /// The presets whose slice and clutter parts changed when a sector's
 /// vertex among returns at the same range stopped depending on the points'
 /// order (the real files' quantised coordinates tie often): their
