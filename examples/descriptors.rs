@@ -285,29 +285,14 @@ fn real_rows(presets: &[DescriptorParams]) -> Res<Vec<RealRow>> {
     let scans = real::real_scans();
     let mut rows = vec![];
     for p in presets {
-        let ds: placecat::Result<Vec<Descriptor>> =
-            scans.par_iter().map(|s| describe(&s.2, p)).collect();
-        let ds = match ds {
-            Ok(ds) => ds,
-            Err(e) => {
-                rows.push(RealRow {
-                    preset: p.preset.to_string(),
-                    scans: scans.len(),
-                    same_place: 0,
-                    wrong: vec![format!("cannot describe every scan: {e}")],
-                });
-                continue;
-            }
+        let (same_place, wrong) = match real::wrong_places(&scans, p) {
+            Ok(wrong) => (scans.len() - wrong.len(), wrong),
+            Err(e) => (0, vec![format!("cannot describe every scan: {e}")]),
         };
-        let m = Space::new(&ds, DistanceOptions::from(p))?.matrix();
-        let wrong: Vec<String> = (0..m.n)
-            .filter(|&i| m.nearest_other(i).is_none_or(|j| scans[j].1 != scans[i].1))
-            .map(|i| scans[i].0.clone())
-            .collect();
         rows.push(RealRow {
             preset: p.preset.to_string(),
-            scans: m.n,
-            same_place: m.n - wrong.len(),
+            scans: scans.len(),
+            same_place,
             wrong,
         });
     }

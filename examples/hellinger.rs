@@ -20,12 +20,10 @@
 //! tree, as the page's first cut does. The test run refuses to overwrite
 //! its report.
 
-use placecat::cluster::*;
 use placecat::descriptor::Metric;
 use placecat::sim::sites::{OUTDOOR_KINDS, WAREHOUSE_KINDS};
 use placecat::sim::SceneKind;
 use placecat::*;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
@@ -41,6 +39,9 @@ use rounds::*;
 #[path = "common/site_rounds.rs"]
 mod site_rounds;
 use site_rounds::*;
+#[path = "common/preset_rounds.rs"]
+mod preset_rounds;
+use preset_rounds::*;
 
 /// Fixed in docs/seeds.md ("issue 18, sixth round", "issue 14, sixth
 /// round") before any run.
@@ -48,21 +49,14 @@ const FAMILY_DEV: &[u64] = &[1, 2, 3, 4, 5, 6];
 const FAMILY_TEST: &[u64] = &[351, 352, 353, 354, 355];
 const SITE_DEV: &[u64] = &[1, 2, 3, 4, 5, 6, 7, 8, 9, 10];
 const SITE_TEST: &[u64] = &[701, 702, 703, 704, 705];
-/// Trial splits per node and k-means++ restarts (rounds 4 and 5).
-const TRIALS: usize = 10;
 const DEV_FILE: &str = "hellinger-dev.json";
 const REPORT_FILE: &str = "hellinger.json";
+const FILES: RoundFiles = RoundFiles {
+    dev: DEV_FILE,
+    report: REPORT_FILE,
+    md: MD_FILE,
+};
 const MD_FILE: &str = "hellinger.md";
-
-/// One clustering's figures on one set.
-#[derive(Serialize, Deserialize, Clone, Copy, Default)]
-struct Figures {
-    stride: Method,
-    /// k-means++, best of 10 restarts (round 4).
-    best_of_10: Method,
-    /// Hierarchical k-means++, the cheapest of 10 trials per split (round 5).
-    hk_trials: Method,
-}
 
 /// A preset's figures with its own metric and with Hellinger.
 #[derive(Serialize, Deserialize, Clone, Copy, Default)]
@@ -127,27 +121,17 @@ fn real_rows(presets: &[(String, Vec<String>)]) -> Res<Vec<RealRow>> {
     for name in names {
         let own = DescriptorParams::preset(name)?;
         for (hellinger, p) in [(false, own.clone()), (true, with_hellinger(&own))] {
-            let ds: placecat::Result<Vec<Descriptor>> =
-                scans.par_iter().map(|s| describe(&s.2, &p)).collect();
-            let mut row = RealRow {
+            let (same_place, wrong) = match real::wrong_places(&scans, &p) {
+                Ok(wrong) => (scans.len() - wrong.len(), wrong),
+                Err(e) => (0, vec![format!("cannot describe every scan: {e}")]),
+            };
+            rows.push(RealRow {
                 preset: name.clone(),
                 hellinger,
                 scans: scans.len(),
-                same_place: 0,
-                wrong: vec![],
-            };
-            match ds {
-                Err(e) => row.wrong.push(format!("cannot describe every scan: {e}")),
-                Ok(ds) => {
-                    let m = Space::new(&ds, DistanceOptions::from(&p))?.matrix();
-                    row.wrong = (0..m.n)
-                        .filter(|&i| m.nearest_other(i).is_none_or(|j| scans[j].1 != scans[i].1))
-                        .map(|i| scans[i].0.clone())
-                        .collect();
-                    row.same_place = m.n - row.wrong.len();
-                }
-            }
-            rows.push(row);
+                same_place,
+                wrong,
+            });
         }
     }
     Ok(rows)
@@ -186,28 +170,6 @@ fn with_hellinger(p: &DescriptorParams) -> DescriptorParams {
         metric: Metric::Hellinger,
         ..p.clone()
     }
-}
-
-/// The three clusterings of `ds` under `params`' distance at `k`, and the
-/// trees (with the space and its matrix) for other cuts.
-fn measure(
-    ds: &[Descriptor],
-    params: &DescriptorParams,
-    truth: &[String],
-    k: usize,
-) -> Res<(Figures, Space, DistanceMatrix, Trees)> {
-    let space = Space::new(ds, DistanceOptions::from(params))?;
-    let m = space.matrix();
-    let stride = KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?.labels;
-    let ten = trees(&space, &m, TRIALS)?;
-    let figures = Figures {
-        stride: once(truth, &stride)?,
-        best_of_10: over_seeds(truth, |s| {
-            Ok(KMeans::fit(&space, &KMeansParams::new(k).seed(s).restarts(TRIALS))?.labels)
-        })?,
-        hk_trials: over_seeds(truth, |s| Ok(ten[s as usize].1.cut_k(k)?.labels))?,
-    };
-    Ok((figures, space, m, ten))
 }
 
 fn pair(ds: &[Descriptor], p: &DescriptorParams, truth: &[String], k: usize) -> Res<Pair> {
@@ -402,62 +364,43 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let has = |a: &str| args.iter().any(|x| x == a);
-    if has("--render") {
-        let r: Report = read_json(&docs.join(REPORT_FILE))?;
-        std::fs::write(docs.join(MD_FILE), render(&r)?)?;
-        return Ok(());
-    }
     let presets = presets_of(&docs)?;
     // The kinds the sites are read against (a change of the simulator's
     // names would show here, not as a silent 0 %).
     assert_eq!((OUTDOOR_KINDS.len(), WAREHOUSE_KINDS.len()), (3, 3));
-    if has("--dev") {
-        let dev = site_rounds::run(&presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set)?;
-        let r = Report {
-            presets,
-            dev,
-            test: Part::default(),
-            real: vec![],
-        };
-        std::fs::write(docs.join(DEV_FILE), serde_json::to_string_pretty(&r)?)?;
-        let mut o = String::new();
-        site_table(&mut o, &r.dev.sites)?;
-        o.push('\n');
-        family_table(&mut o, &r, &r.dev.families, |_| true)?;
-        println!("{o}");
-        return Ok(());
-    }
-    if docs.join(REPORT_FILE).exists() {
-        return Err(format!(
-            "docs/{REPORT_FILE} exists: the test seeds run once (--render renders it again)"
-        )
-        .into());
-    }
-    let dev: Report =
-        read_json(&docs.join(DEV_FILE)).map_err(|e| format!("{e} (run with --dev first)"))?;
-    let test = site_rounds::run(
-        &presets,
-        FAMILY_TEST,
-        SITE_TEST,
-        "test",
-        site_set,
-        family_set,
-    )?;
-    let real = real_rows(&presets)?;
-    let r = Report {
-        presets,
-        dev: dev.dev,
-        test,
-        real,
-    };
-    std::fs::write(docs.join(REPORT_FILE), serde_json::to_string_pretty(&r)?)?;
-    std::fs::write(docs.join(MD_FILE), render(&r)?)?;
-    eprintln!(
-        "wrote docs/{REPORT_FILE} and docs/{MD_FILE} ({:.0} s)",
-        r.test.seconds
-    );
-    Ok(())
+    round_main(
+        &FILES,
+        || {
+            Ok(Report {
+                presets: presets.clone(),
+                dev: site_rounds::run(&presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set)?,
+                test: Part::default(),
+                real: vec![],
+            })
+        },
+        |r| {
+            let mut o = String::new();
+            site_table(&mut o, &r.dev.sites)?;
+            o.push('\n');
+            family_table(&mut o, r, &r.dev.families, |_| true)?;
+            Ok(o)
+        },
+        |dev| {
+            Ok(Report {
+                presets: presets.clone(),
+                dev: dev.dev,
+                test: site_rounds::run(
+                    &presets,
+                    FAMILY_TEST,
+                    SITE_TEST,
+                    "test",
+                    site_set,
+                    family_set,
+                )?,
+                real: real_rows(&presets)?,
+            })
+        },
+        render,
+    )
 }

@@ -19,11 +19,9 @@
 //! categories the default rule chooses on each tree, as the page's first
 //! cut does. The test run refuses to overwrite its report.
 
-use placecat::cluster::*;
 use placecat::sim::sites::OUTDOOR_KINDS;
 use placecat::sim::SceneKind;
 use placecat::*;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
@@ -42,6 +40,9 @@ use rounds::*;
 #[path = "common/site_rounds.rs"]
 mod site_rounds;
 use site_rounds::*;
+#[path = "common/preset_rounds.rs"]
+mod preset_rounds;
+use preset_rounds::*;
 
 /// Fixed in docs/seeds.md ("issue 18, seventh round", "issue 14, seventh
 /// round") before any run; the seen test seeds of the site's earlier
@@ -53,24 +54,17 @@ const SITE_DEV: &[u64] = &[
     704, 705,
 ];
 const SITE_TEST: &[u64] = &[801, 802, 803, 804, 805];
-/// Trial splits per node and k-means++ restarts (rounds 4 and 5).
-const TRIALS: usize = 10;
 /// The site's presets: the paper's, the sixth round's page preset, this
 /// round's. The families get the last two beside their own.
 const SITE_PRESETS: [&str; 3] = ["outdoor", "outdoor_hellinger", "outdoor_near"];
 const DEV_FILE: &str = "near-ranges-dev.json";
 const REPORT_FILE: &str = "near-ranges.json";
+const FILES: RoundFiles = RoundFiles {
+    dev: DEV_FILE,
+    report: REPORT_FILE,
+    md: MD_FILE,
+};
 const MD_FILE: &str = "near-ranges.md";
-
-/// One preset's figures on one set.
-#[derive(Serialize, Deserialize, Clone, Copy, Default)]
-struct Figures {
-    stride: Method,
-    /// k-means++, best of 10 restarts (round 4).
-    best_of_10: Method,
-    /// Hierarchical k-means++, the cheapest of 10 trials per split (round 5).
-    hk_trials: Method,
-}
 
 #[derive(Serialize, Deserialize, Clone)]
 struct FamilySet {
@@ -134,50 +128,18 @@ fn real_rows(presets: &[(String, Vec<String>)]) -> Res<Vec<RealRow>> {
     let mut rows = vec![];
     for name in names {
         let p = DescriptorParams::preset(name)?;
-        let ds: placecat::Result<Vec<Descriptor>> =
-            scans.par_iter().map(|s| describe(&s.2, &p)).collect();
-        let mut row = RealRow {
+        let (same_place, wrong) = match real::wrong_places(&scans, &p) {
+            Ok(wrong) => (scans.len() - wrong.len(), wrong),
+            Err(e) => (0, vec![format!("cannot describe every scan: {e}")]),
+        };
+        rows.push(RealRow {
             preset: name.clone(),
             scans: scans.len(),
-            same_place: 0,
-            wrong: vec![],
-        };
-        match ds {
-            Err(e) => row.wrong.push(format!("cannot describe every scan: {e}")),
-            Ok(ds) => {
-                let m = Space::new(&ds, DistanceOptions::from(&p))?.matrix();
-                row.wrong = (0..m.n)
-                    .filter(|&i| m.nearest_other(i).is_none_or(|j| scans[j].1 != scans[i].1))
-                    .map(|i| scans[i].0.clone())
-                    .collect();
-                row.same_place = m.n - row.wrong.len();
-            }
-        }
-        rows.push(row);
+            same_place,
+            wrong,
+        });
     }
     Ok(rows)
-}
-
-/// The three clusterings of `ds` under `params`' distance at `k`, and the
-/// trees (with the space and its matrix) for other cuts.
-fn measure(
-    ds: &[Descriptor],
-    params: &DescriptorParams,
-    truth: &[String],
-    k: usize,
-) -> Res<(Figures, Space, DistanceMatrix, Trees)> {
-    let space = Space::new(ds, DistanceOptions::from(params))?;
-    let m = space.matrix();
-    let stride = KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?.labels;
-    let ten = trees(&space, &m, TRIALS)?;
-    let figures = Figures {
-        stride: once(truth, &stride)?,
-        best_of_10: over_seeds(truth, |s| {
-            Ok(KMeans::fit(&space, &KMeansParams::new(k).seed(s).restarts(TRIALS))?.labels)
-        })?,
-        hk_trials: over_seeds(truth, |s| Ok(ten[s as usize].1.cut_k(k)?.labels))?,
-    };
-    Ok((figures, space, m, ten))
 }
 
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
@@ -390,66 +352,47 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let has = |a: &str| args.iter().any(|x| x == a);
-    if has("--render") {
-        let r: Report = read_json(&docs.join(REPORT_FILE))?;
-        std::fs::write(docs.join(MD_FILE), render(&r)?)?;
-        return Ok(());
-    }
     let presets = round_presets(&docs)?;
     // The kinds the site is read against (a change of the simulator's
     // names would show here, not as a silent 0 %).
     assert_eq!(OUTDOOR_KINDS.len(), 3);
     let scenes = [SceneKind::Outdoor];
-    if has("--dev") {
-        let dev = run_on(
-            &scenes, &presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set,
-        )?;
-        let r = Report {
-            presets,
-            dev,
-            test: Part::default(),
-            real: vec![],
-        };
-        std::fs::write(docs.join(DEV_FILE), serde_json::to_string_pretty(&r)?)?;
-        let mut o = String::new();
-        site_table(&mut o, &r.dev.sites)?;
-        o.push('\n');
-        family_table(&mut o, &r, &r.dev.families, |_| true)?;
-        println!("{o}");
-        return Ok(());
-    }
-    if docs.join(REPORT_FILE).exists() {
-        return Err(format!(
-            "docs/{REPORT_FILE} exists: the test seeds run once (--render renders it again)"
-        )
-        .into());
-    }
-    let dev: Report =
-        read_json(&docs.join(DEV_FILE)).map_err(|e| format!("{e} (run with --dev first)"))?;
-    let test = run_on(
-        &scenes,
-        &presets,
-        FAMILY_TEST,
-        SITE_TEST,
-        "test",
-        site_set,
-        family_set,
-    )?;
-    let real = real_rows(&presets)?;
-    let r = Report {
-        presets,
-        dev: dev.dev,
-        test,
-        real,
-    };
-    std::fs::write(docs.join(REPORT_FILE), serde_json::to_string_pretty(&r)?)?;
-    std::fs::write(docs.join(MD_FILE), render(&r)?)?;
-    eprintln!(
-        "wrote docs/{REPORT_FILE} and docs/{MD_FILE} ({:.0} s)",
-        r.test.seconds
-    );
-    Ok(())
+    round_main(
+        &FILES,
+        || {
+            Ok(Report {
+                presets: presets.clone(),
+                dev: run_on(
+                    &scenes, &presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set,
+                )?,
+                test: Part::default(),
+                real: vec![],
+            })
+        },
+        |r| {
+            let mut o = String::new();
+            site_table(&mut o, &r.dev.sites)?;
+            o.push('\n');
+            family_table(&mut o, r, &r.dev.families, |_| true)?;
+            Ok(o)
+        },
+        |dev| {
+            Ok(Report {
+                presets: presets.clone(),
+                dev: dev.dev,
+                test: run_on(
+                    &scenes,
+                    &presets,
+                    FAMILY_TEST,
+                    SITE_TEST,
+                    "test",
+                    site_set,
+                    family_set,
+                )?,
+                real: real_rows(&presets)?,
+            })
+        },
+        render,
+    )
 }

@@ -47,6 +47,11 @@ const SITE_TEST: &[u64] = &[601, 602, 603, 604, 605];
 const TRIALS: usize = 10;
 const DEV_FILE: &str = "split-trials-dev.json";
 const REPORT_FILE: &str = "split-trials.json";
+const FILES: RoundFiles = RoundFiles {
+    dev: DEV_FILE,
+    report: REPORT_FILE,
+    md: MD_FILE,
+};
 const MD_FILE: &str = "split-trials.md";
 
 #[derive(Serialize, Deserialize, Clone, Copy, Default)]
@@ -277,59 +282,41 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let has = |a: &str| args.iter().any(|x| x == a);
-    if has("--render") {
-        let r: Report = read_json(&docs.join(REPORT_FILE))?;
-        std::fs::write(docs.join(MD_FILE), render(&r)?)?;
-        return Ok(());
-    }
     let presets = presets_of(&docs)?;
     // The kinds the sites are read against (a change of the simulator's
     // names would show here, not as a silent 0 %).
     assert_eq!((OUTDOOR_KINDS.len(), WAREHOUSE_KINDS.len()), (3, 3));
-    if has("--dev") {
-        let dev = site_rounds::run(&presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set)?;
-        let r = Report {
-            presets,
-            dev,
-            test: Part::default(),
-        };
-        std::fs::write(docs.join(DEV_FILE), serde_json::to_string_pretty(&r)?)?;
-        let mut o = String::new();
-        site_table(&mut o, &r.dev.sites)?;
-        o.push('\n');
-        family_table(&mut o, &r, &r.dev.families, |_| true)?;
-        println!("{o}");
-        return Ok(());
-    }
-    if docs.join(REPORT_FILE).exists() {
-        return Err(format!(
-            "docs/{REPORT_FILE} exists: the test seeds run once (--render renders it again)"
-        )
-        .into());
-    }
-    let dev: Report =
-        read_json(&docs.join(DEV_FILE)).map_err(|e| format!("{e} (run with --dev first)"))?;
-    let test = site_rounds::run(
-        &presets,
-        FAMILY_TEST,
-        SITE_TEST,
-        "test",
-        site_set,
-        family_set,
-    )?;
-    let r = Report {
-        presets,
-        dev: dev.dev,
-        test,
-    };
-    std::fs::write(docs.join(REPORT_FILE), serde_json::to_string_pretty(&r)?)?;
-    std::fs::write(docs.join(MD_FILE), render(&r)?)?;
-    eprintln!(
-        "wrote docs/{REPORT_FILE} and docs/{MD_FILE} ({:.0} s)",
-        r.test.seconds
-    );
-    Ok(())
+    round_main(
+        &FILES,
+        || {
+            Ok(Report {
+                presets: presets.clone(),
+                dev: site_rounds::run(&presets, FAMILY_DEV, SITE_DEV, "dev", site_set, family_set)?,
+                test: Part::default(),
+            })
+        },
+        |r| {
+            let mut o = String::new();
+            site_table(&mut o, &r.dev.sites)?;
+            o.push('\n');
+            family_table(&mut o, r, &r.dev.families, |_| true)?;
+            Ok(o)
+        },
+        |dev| {
+            Ok(Report {
+                presets: presets.clone(),
+                dev: dev.dev,
+                test: site_rounds::run(
+                    &presets,
+                    FAMILY_TEST,
+                    SITE_TEST,
+                    "test",
+                    site_set,
+                    family_set,
+                )?,
+            })
+        },
+        render,
+    )
 }

@@ -1,7 +1,9 @@
 //! The real scans in tests/data/real with the place each was recorded at
 //! (groups.csv), for the examples that report on them.
 
-use placecat::io;
+use placecat::cluster::Space;
+use placecat::{describe, io, DescriptorParams, DistanceOptions};
+use rayon::prelude::*;
 
 /// (file, place, points) for each row of groups.csv; empty (with a note on
 /// stderr) when the folder is missing.
@@ -22,4 +24,23 @@ pub fn real_scans() -> Vec<(String, String, Vec<[f32; 3]>)> {
             (f.to_string(), p.to_string(), c.points)
         })
         .collect()
+}
+
+/// Same-place retrieval: the files of `scans` whose nearest other scan
+/// under `params`' Delta was recorded at another place; an error when a
+/// scan cannot be described.
+#[allow(dead_code)] // choose_k.rs and experiments.rs only read the scans
+pub fn wrong_places(
+    scans: &[(String, String, Vec<[f32; 3]>)],
+    params: &DescriptorParams,
+) -> placecat::Result<Vec<String>> {
+    let ds = scans
+        .par_iter()
+        .map(|s| describe(&s.2, params))
+        .collect::<placecat::Result<Vec<_>>>()?;
+    let m = Space::new(&ds, DistanceOptions::from(params))?.matrix();
+    Ok((0..m.n)
+        .filter(|&i| m.nearest_other(i).is_none_or(|j| scans[j].1 != scans[i].1))
+        .map(|i| scans[i].0.clone())
+        .collect())
 }

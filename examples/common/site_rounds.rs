@@ -190,3 +190,58 @@ pub fn run_on<F, S>(
         seconds: t0.elapsed().as_secs_f64(),
     })
 }
+
+/// The files of a round in docs/: its development run, its test report and
+/// the report rendered.
+pub struct RoundFiles {
+    pub dev: &'static str,
+    pub report: &'static str,
+    pub md: &'static str,
+}
+
+/// The command line every round shares. `--render` renders the report to
+/// its markdown again; `--dev` makes the development report with `dev`,
+/// writes it and prints `dev_tables` of it; with neither, the test seeds
+/// run once: `test` gets the development report (`--dev` must have run)
+/// and its report is written and rendered. A test report that exists is
+/// never overwritten.
+pub fn round_main<R: Serialize + serde::de::DeserializeOwned>(
+    files: &RoundFiles,
+    dev: impl FnOnce() -> Res<R>,
+    dev_tables: impl Fn(&R) -> Res<String>,
+    test: impl FnOnce(R) -> Res<R>,
+    render: impl Fn(&R) -> Res<String>,
+) -> Res<()> {
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let has = |a: &str| std::env::args().skip(1).any(|x| x == a);
+    if has("--render") {
+        let r: R = crate::families::read_json(&docs.join(files.report))?;
+        std::fs::write(docs.join(files.md), render(&r)?)?;
+        return Ok(());
+    }
+    if has("--dev") {
+        let r = dev()?;
+        std::fs::write(docs.join(files.dev), serde_json::to_string_pretty(&r)?)?;
+        println!("{}", dev_tables(&r)?);
+        return Ok(());
+    }
+    let report = files.report;
+    if docs.join(report).exists() {
+        return Err(format!(
+            "docs/{report} exists: the test seeds run once (--render renders it again)"
+        )
+        .into());
+    }
+    let t0 = std::time::Instant::now();
+    let dev: R = crate::families::read_json(&docs.join(files.dev))
+        .map_err(|e| format!("{e} (run with --dev first)"))?;
+    let r = test(dev)?;
+    std::fs::write(docs.join(report), serde_json::to_string_pretty(&r)?)?;
+    std::fs::write(docs.join(files.md), render(&r)?)?;
+    eprintln!(
+        "wrote docs/{report} and docs/{} ({:.0} s)",
+        files.md,
+        t0.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
