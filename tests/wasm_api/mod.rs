@@ -277,7 +277,7 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     // Every preset has its note, and the presets with parts carry them.
     let notes: js_sys::Array = preset_notes().unwrap().unchecked_into();
     assert_eq!(notes.length() as usize, placecat::descriptor::PRESETS.len());
-    assert_eq!(notes.length(), 10);
+    assert_eq!(notes.length(), 11);
     let hellinger = js_sys::JSON::stringify(&preset_params("outdoor_hellinger").unwrap()).unwrap();
     assert!(String::from(hellinger).contains("\"metric\":\"hellinger\""));
     let warehouse = js_sys::JSON::stringify(&preset_params("warehouse").unwrap()).unwrap();
