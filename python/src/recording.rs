@@ -43,9 +43,12 @@ impl PyScans {
                 Some(Err(e)) => {
                     // Listed first: a warning turned into an error (-W error) raises here.
                     let message = e.to_string();
-                    self.errors.push(message.clone());
+                    // A damaged bag's names can hold NUL, which a C string cannot.
+                    let text =
+                        std::ffi::CString::new(message.replace('\0', "\\0")).expect("no NUL left");
+                    self.errors.push(message);
                     let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
-                    PyErr::warn(py, category.as_any(), &std::ffi::CString::new(message)?, 1)?;
+                    PyErr::warn(py, category.as_any(), &text, 1)?;
                 }
             }
         }

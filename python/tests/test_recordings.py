@@ -50,7 +50,7 @@ def test_a_bag_gives_its_clouds_with_their_odometry_thinned_as_the_cli_thins():
     one = placecat.scans(BAGS / "ros1_corridor.bag", every_metres=1.0)
     assert one.topic == "/points"
     assert len(list(one)) == 1 and one.met == 2 and one.total == 2
-    # The cloud a describe of the points gives, as describe_file of the same bytes would.
+    # The points describe as any array does.
     d = placecat.describe(clouds[0]["points"], "indoor")
     assert d.summary["points"] == 2700
 
@@ -68,11 +68,13 @@ def test_a_cloud_that_cannot_be_read_is_skipped_with_a_warning_and_listed():
 
 
 def test_what_is_not_a_recording_or_cannot_be_opened_raises_naming_the_file():
-    with pytest.raises(placecat.PlacecatError, match=r"room_scan1\.pcd: not a recording"):
+    with pytest.raises(placecat.PlacecatError, match=r"room_scan1\.pcd: invalid parameter: not a recording"):
         placecat.scans(ROOT / "tests/data/real/pcl_room/room_scan1.pcd")
     with pytest.raises(placecat.PlacecatError, match=r"truncated\.e57: E57: .*truncated"):
         placecat.scans(SURVEY / "truncated.e57")
-    with pytest.raises(placecat.PlacecatError, match="a topic, every and every_metres are a bag.s"):
+    with pytest.raises(placecat.PlacecatError, match=r"survey\.e57: .*a topic, every and every_metres are a bag.s"):
         placecat.scans(SURVEY / "survey.e57", every=2)
+    with pytest.raises(placecat.PlacecatError, match=r"las14_fmt6\.las: .*not a recording"):
+        placecat.scans(SURVEY / "las14_fmt6.las")
     with pytest.raises(placecat.PlacecatError, match="/nope"):
         placecat.scans(BAGS / "two_cloud_topics.bag", topic="/nope")

@@ -92,13 +92,17 @@ pub struct SurveyScans<R: Read + Seek> {
 }
 
 impl<R: Read + Seek> SurveyScans<R> {
-    /// Open the survey in `reader`; `file` names it in errors, and its base
-    /// name prefixes the scans' names (`site.e57:hall`, as a bag's clouds
-    /// are named). Reads the file's header and XML section, no points.
+    /// Open the survey in `reader`; `file` names it (and prefixes the scans'
+    /// names). Reads the file's header and XML section, no points.
     pub fn open(reader: R, file: &str, limits: ReadLimits) -> Result<Self> {
-        let base = file.rsplit(['/', '\\']).next().unwrap_or(file);
+        Self::open_as(reader, file, file, limits)
+    }
+
+    /// [`open`](Self::open), the scans named after `prefix` (e.g. the
+    /// file's base name, `site.e57:hall`) while errors name `file`.
+    pub fn open_as(reader: R, file: &str, prefix: &str, limits: ReadLimits) -> Result<Self> {
         Ok(SurveyScans {
-            survey: Survey::open(reader, base).map_err(|e| e.in_file(file))?,
+            survey: Survey::open(reader, prefix).map_err(|e| e.in_file(file))?,
             next: 0,
             limits,
             file: file.to_string(),

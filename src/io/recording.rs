@@ -41,7 +41,9 @@ impl Recording {
     /// bag by its name (`.bag`, `.mcap`). `opts` chooses a bag's topic and
     /// thinning; a survey is read station by station, so a topic or a
     /// thinning for it is an error, as is a file that is neither, or
-    /// rosbag2's SQLite storage. Errors name the path.
+    /// rosbag2's SQLite storage. Errors name the path; the scans are named
+    /// after the file's base name, a bag's clouds `run.bag:/points:000042`
+    /// and a survey's stations `site.e57:hall`.
     pub fn open_path(path: &std::path::Path, opts: super::bag::BagOptions) -> Result<Self> {
         use std::io::{Read, Seek};
         let name = path.display().to_string();
@@ -51,15 +53,18 @@ impl Recording {
         let is_e57 = file.read_exact(&mut head).is_ok() && super::e57::looks_like_e57(&head);
         if is_e57 {
             if opts.topic.is_some() || opts.every != 1 || opts.every_metres.is_some() {
-                return Err(Error::InvalidParameter(format!(
-                    "{name}: an E57 survey is read station by station; a topic, every and \
+                return Err(Error::InvalidParameter(
+                    "an E57 survey is read station by station; a topic, every and \
                      every_metres are a bag's"
-                )));
+                        .into(),
+                )
+                .in_file(&name));
             }
             // The sniff moved the file on; the survey's header is read from byte 0.
             file.rewind().map_err(in_file)?;
             let reader = std::io::BufReader::with_capacity(1 << 20, file);
-            let scans = super::e57::SurveyScans::open(reader, &name, opts.limits)?;
+            let base = name.rsplit(['/', '\\']).next().unwrap_or(&name);
+            let scans = super::e57::SurveyScans::open_as(reader, &name, base, opts.limits)?;
             return Ok(Recording::Survey(Box::new(scans)));
         }
         let lower = name.to_ascii_lowercase();
@@ -75,10 +80,17 @@ impl Recording {
             let reader = super::bag::BagReader::open_path(path, opts)?;
             return Ok(Recording::Bag(Box::new(reader)));
         }
-        Err(Error::InvalidParameter(format!(
-            "{name}: not a recording (an E57 survey, a ROS .bag or a rosbag2 .mcap); a scan \
-             file is read whole"
-        )))
+        if lower.ends_with(".e57") {
+            return Err(
+                Error::E57("not an E57 file (no E57 signature at its start)".into()).in_file(&name),
+            );
+        }
+        Err(Error::InvalidParameter(
+            "not a recording (an E57 survey, a ROS .bag or a rosbag2 .mcap: a rosbag2 folder \
+             is read through its .mcap files); a scan file is read whole"
+                .into(),
+        )
+        .in_file(&name))
     }
 
     /// Scans in the recording: a bag's clouds on its topic (before

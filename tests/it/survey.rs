@@ -520,11 +520,11 @@ mod native {
                 .count(),
             1
         );
-        // Refusals name the file and say why.
+        // Refusals begin with the file, as the readers' errors do, and say why.
         let refused = |p: PathBuf, opts, why: &str| {
             let e = open(&p, opts).err().expect("refused").to_string();
             assert!(
-                e.contains(&p.display().to_string()) && e.contains(why),
+                e.starts_with(&format!("{}: ", p.display())) && e.contains(why),
                 "{e}"
             );
         };
@@ -544,6 +544,10 @@ mod native {
             "SQLite storage (.db3) is not read",
         );
         std::fs::remove_file(db3).unwrap();
+        let not_e57 = std::env::temp_dir().join(format!("placecat-{}.e57", std::process::id()));
+        std::fs::write(&not_e57, b"ply\nformat ascii 1.0\n").unwrap();
+        refused(not_e57.clone(), BagOptions::default(), "no E57 signature");
+        std::fs::remove_file(not_e57).unwrap();
     }
 
     #[test]
