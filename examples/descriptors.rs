@@ -285,7 +285,7 @@ fn real_rows(presets: &[DescriptorParams]) -> Res<Vec<RealRow>> {
     let scans = real::real_scans();
     let mut rows = vec![];
     for p in presets {
-        let (same_place, wrong) = match real::wrong_places(&scans, p) {
+        let (same_place, wrong) = match real::wrong_places(&scans, p)? {
             Ok(wrong) => (scans.len() - wrong.len(), wrong),
             Err(e) => (0, vec![format!("cannot describe every scan: {e}")]),
         };

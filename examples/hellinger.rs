@@ -121,7 +121,7 @@ fn real_rows(presets: &[(String, Vec<String>)]) -> Res<Vec<RealRow>> {
     for name in names {
         let own = DescriptorParams::preset(name)?;
         for (hellinger, p) in [(false, own.clone()), (true, with_hellinger(&own))] {
-            let (same_place, wrong) = match real::wrong_places(&scans, &p) {
+            let (same_place, wrong) = match real::wrong_places(&scans, &p)? {
                 Ok(wrong) => (scans.len() - wrong.len(), wrong),
                 Err(e) => (0, vec![format!("cannot describe every scan: {e}")]),
             };

@@ -27,20 +27,24 @@ pub fn real_scans() -> Vec<(String, String, Vec<[f32; 3]>)> {
 }
 
 /// Same-place retrieval: the files of `scans` whose nearest other scan
-/// under `params`' Delta was recorded at another place; an error when a
-/// scan cannot be described.
+/// under `params`' Delta was recorded at another place, or (the inner
+/// error) why a scan could not be described.
 #[allow(dead_code)] // choose_k.rs and experiments.rs only read the scans
 pub fn wrong_places(
     scans: &[(String, String, Vec<[f32; 3]>)],
     params: &DescriptorParams,
-) -> placecat::Result<Vec<String>> {
-    let ds = scans
+) -> placecat::Result<Result<Vec<String>, placecat::Error>> {
+    let ds = match scans
         .par_iter()
         .map(|s| describe(&s.2, params))
-        .collect::<placecat::Result<Vec<_>>>()?;
+        .collect::<placecat::Result<Vec<_>>>()
+    {
+        Ok(ds) => ds,
+        Err(e) => return Ok(Err(e)),
+    };
     let m = Space::new(&ds, DistanceOptions::from(params))?.matrix();
-    Ok((0..m.n)
+    Ok(Ok((0..m.n)
         .filter(|&i| m.nearest_other(i).is_none_or(|j| scans[j].1 != scans[i].1))
         .map(|i| scans[i].0.clone())
-        .collect())
+        .collect()))
 }

@@ -346,8 +346,8 @@ impl DescriptorParams {
     /// place the vehicle stands in, and near a change of place most of the
     /// paper's 5-20 m disc lies in the other place; what stands within 5 m
     /// (the trees of a path, the verges of a road, nothing on a field) is
-    /// where the vehicle is. Chosen on development seeds only, among seven
-    /// sets of intervals (docs/seeds.md, docs/near-ranges.md).
+    /// where the vehicle is. Chosen on development seeds only, among ten
+    /// sets of intervals (docs/seeds.md, docs/near-ranges-explore.json).
     pub fn outdoor_near() -> Self {
         let mut ranges = vec![(2.0, Some(5.0)), (4.0, Some(8.0))];
         ranges.extend(Self::outdoor().ranges.into_iter().skip(1));
