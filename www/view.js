@@ -6,7 +6,7 @@ import { TrajectoryMap } from './map.js';
 import { Legend } from './legend.js';
 import { shareColours } from './colours.js';
 import { renderSweep, f32String } from './sweep.js';
-import { categoryIndex, colourSlots, dendrogramOf, displayName, errorText, nameOf, posesOf } from './state.js';
+import { DEMO_PRESET, categoryIndex, colourSlots, dendrogramOf, displayName, errorText, nameOf, posesOf } from './state.js';
 import { suggestionText } from './suggest.js';
 
 /** @typedef {import('./state.js').State} State */
@@ -56,7 +56,9 @@ export class View {
     this.map.highlight = this.dendrogram.highlight = -1;
     const n = s.scans.length;
     const sg = s.suggestion;
-    $('preset-note').textContent = sg ? suggestionText(sg) + (sg.preset !== preset ? `; described with ${preset} (${s.demo ? "the demo's" : 'as chosen'})` : '.') : '';
+    // A demo opens on its own preset; any other the user chose.
+    const why = s.demo && DEMO_PRESET[s.demo] === preset ? "the demo's" : 'as chosen';
+    $('preset-note').textContent = sg ? suggestionText(sg) + (sg.preset !== preset ? `; described with ${preset} (${why})` : '.') : '';
     $('threshold').value = s.lastCut ? s.lastCut.threshold.toFixed(4) : '';
     $('classify').disabled = !s.modelJson;
     if (!s.labels || s.labels.length !== n) {
