@@ -35,20 +35,11 @@ export function sliceReader(file) {
 
 /** The bag's topics (only its index or summary is read). @param {Wasm} wasm @param {File} file @param {string} name */
 export function bagTopics(wasm, file, name) {
-  refuseDb3(name);
   return wasm.bagTopics(file.size, sliceReader(file), name);
-}
-
-/** rosbag2's SQLite storage is not read (as the CLI says; a rosbag2 folder's .mcap files are). @param {string} name */
-function refuseDb3(name) {
-  if (/\.db3$/i.test(name)) {
-    throw new Error(`${name}: ROS bag: rosbag2 SQLite storage (.db3) is not read, only MCAP: convert the bag (\`ros2 bag convert\` with storage_id: mcap) and give the .mcap or its folder`);
-  }
 }
 
 /** Describe a bag's kept clouds (describeRecording). @param {Wasm} wasm @param {BagTask} t @param {(p: BagPartial, transfer: Transferable[]) => void} post */
 export function describeBag(wasm, t, post) {
-  refuseDb3(t.name);
   const open = (/** @type {Params} */ params) =>
     new wasm.BagClouds(t.file.size, sliceReader(t.file), t.name, t.topic, t.every, params, undefined, t.previewPoints ?? 3000, t.everyMetres);
   return describeRecording(open, t, post);

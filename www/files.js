@@ -1,7 +1,7 @@
 // Collecting files from inputs and drag-and-drop (folders included).
 
 /** A ROS bag (ROS 1 .bag, rosbag2 .mcap): one input that yields many scans (bag.js).
- * rosbag2's SQLite storage (.db3) counts too, to be refused with a message (bagreader.js). */
+ * rosbag2's SQLite storage (.db3) counts too, to be refused with the core's message when the worker opens it. */
 export const isBag = (name) => /\.(bag|mcap|db3)$/i.test(name);
 /** A file of one scan the wasm reader takes (src/io: PLY, PCD, KITTI .bin, LAS/LAZ, single-scan E57), or a bag. */
 export const isScan = (name) => /\.(ply|pcd|bin|las|laz|e57)$/i.test(name) || isBag(name);

@@ -173,6 +173,12 @@ pub fn sniff(bytes: &[u8], name: &str) -> Result<FileKind> {
     ))
 }
 
+/// The last part of a path given as text (`a/b/run.bag` -> `run.bag`), by
+/// either separator, as scans of a recording are named.
+pub(crate) fn base_name(file: &str) -> &str {
+    file.rsplit(['/', '\\']).next().unwrap_or(file)
+}
+
 /// True when the name looks like a scan placecat can read (for folder walks).
 pub fn is_scan_name(name: &str) -> bool {
     let lower = name.to_ascii_lowercase();

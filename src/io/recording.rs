@@ -63,24 +63,16 @@ impl Recording {
             // The sniff moved the file on; the survey's header is read from byte 0.
             file.rewind().map_err(in_file)?;
             let reader = std::io::BufReader::with_capacity(1 << 20, file);
-            let base = name.rsplit(['/', '\\']).next().unwrap_or(&name);
+            let base = super::base_name(&name);
             let scans = super::e57::SurveyScans::open_as(reader, &name, base, opts.limits)?;
             return Ok(Recording::Survey(Box::new(scans)));
         }
-        let lower = name.to_ascii_lowercase();
-        if lower.ends_with(".db3") {
-            return Err(Error::Bag(
-                "rosbag2 SQLite storage (.db3) is not read, only MCAP: convert the bag \
-                 (`ros2 bag convert` with storage_id: mcap) and give the .mcap"
-                    .into(),
-            )
-            .in_file(&name));
-        }
-        if lower.ends_with(".bag") || lower.ends_with(".mcap") {
+        // A .db3 too: opening refuses it with the core's message.
+        if super::bag::is_bag_name(&name) {
             let reader = super::bag::BagReader::open_path(path, opts)?;
             return Ok(Recording::Bag(Box::new(reader)));
         }
-        if lower.ends_with(".e57") {
+        if name.to_ascii_lowercase().ends_with(".e57") {
             return Err(
                 Error::E57("not an E57 file (no E57 signature at its start)".into()).in_file(&name),
             );

@@ -47,6 +47,32 @@ use crate::error::{Error, Result};
 use layout::{is_type, Item, Layout, Walk, Want};
 use serde::{Deserialize, Serialize};
 
+/// True for a file name of a ROS bag: ROS 1 `.bag`, rosbag2 `.mcap`, and
+/// rosbag2's SQLite `.db3`, which opening refuses with
+/// [`unsupported_storage`]'s message (so a folder of them is said to hold
+/// bags placecat cannot read, not passed over as holding no scans).
+pub fn is_bag_name(name: &str) -> bool {
+    let lower = name.to_ascii_lowercase();
+    [".bag", ".mcap", ".db3"]
+        .iter()
+        .any(|ext| lower.ends_with(ext))
+}
+
+/// Why a bag cannot be read before it is opened: rosbag2's SQLite storage
+/// (`.db3`), named by `name`. A rosbag2 folder (metadata.yaml and its
+/// storage files) is read through its `.mcap` files; `.db3` files would
+/// need SQLite, which placecat does not carry.
+pub fn unsupported_storage(name: &str) -> Option<Error> {
+    name.to_ascii_lowercase().ends_with(".db3").then(|| {
+        Error::Bag(
+            "rosbag2 SQLite storage (.db3) is not read, only MCAP: convert the bag \
+             (`ros2 bag convert` with storage_id: mcap) and read its .mcap files"
+                .into(),
+        )
+        .in_file(name)
+    })
+}
+
 /// One topic of a bag.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
@@ -250,6 +276,9 @@ fn is_tf(t: &str) -> bool {
 /// The topics of a bag, sorted by name, with their types and message counts.
 /// Reads only the index (ROS 1) or summary (MCAP) when the bag has one.
 pub fn topics<S: ByteSource + 'static>(src: S, file: &str) -> Result<Vec<TopicInfo>> {
+    if let Some(e) = unsupported_storage(file) {
+        return Err(e);
+    }
     Ok(Bag::open(src, file).map_err(|e| e.in_file(file))?.topics())
 }
 

@@ -165,6 +165,9 @@ impl<S: ByteSource + 'static> BagReader<S> {
     /// in cloud names. Fails when no cloud topic can be chosen; everything
     /// after that is reported per cloud by the iterator.
     pub fn open(src: S, file: &str, opts: BagOptions) -> Result<Self> {
+        if let Some(e) = super::unsupported_storage(file) {
+            return Err(e);
+        }
         Self::open_inner(src, file, opts).map_err(|e| e.in_file(file))
     }
 
@@ -204,7 +207,7 @@ impl<S: ByteSource + 'static> BagReader<S> {
         Ok(BagReader {
             cloud_ids: bag.ids(|c| c.topic == topic),
             walker: bag.walker(),
-            bag_name: file.rsplit(['/', '\\']).next().unwrap_or(file).to_string(),
+            bag_name: crate::io::base_name(file).to_string(),
             width: count.saturating_sub(1).to_string().len().max(6),
             count,
             bag,

@@ -81,24 +81,12 @@ impl BagArgs {
 /// refuses with [`unsupported`]: so a rosbag2 folder of SQLite storage is
 /// said to be one, not passed over as holding no scans).
 pub fn is_bag(path: &Path) -> bool {
-    let name = path.to_string_lossy().to_ascii_lowercase();
-    name.ends_with(".bag") || name.ends_with(".mcap") || name.ends_with(".db3")
+    placecat::io::bag::is_bag_name(&path.to_string_lossy())
 }
 
-/// Why a bag cannot be read before it is opened: rosbag2's SQLite storage.
-/// A rosbag2 folder (metadata.yaml and its storage files) is read through
-/// its `.mcap` files, which a folder walk finds; `.db3` files would need
-/// SQLite, which placecat does not carry.
+/// Why a bag cannot be read before it is opened (the core's rule).
 fn unsupported(path: &Path) -> Option<placecat::Error> {
-    let name = path.to_string_lossy();
-    name.to_ascii_lowercase().ends_with(".db3").then(|| {
-        placecat::Error::Bag(
-            "rosbag2 SQLite storage (.db3) is not read, only MCAP: convert the bag \
-             (`ros2 bag convert` with storage_id: mcap) and give the .mcap or its folder"
-                .into(),
-        )
-        .in_file(name.as_ref())
-    })
+    placecat::io::bag::unsupported_storage(&path.to_string_lossy())
 }
 
 /// `placecat topics BAG`: one line per topic (name, type, count), or JSON.
