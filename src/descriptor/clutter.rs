@@ -152,21 +152,55 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
     describe_scan(&PolarScan::new(points))
 }
 
+/// The room round a scan: the walls of the free-space polygon's sectors,
+/// its floor and ceiling, and the polygon's area. Shared with the
+/// [`columns`](super::columns) part, which reads what stands inside it by
+/// direction.
+pub(super) struct Room {
+    /// Horizontal range of each sector's wall ([`slice::SECTORS`] of them).
+    pub walls: Vec<f32>,
+    /// Floor height relative to the sensor (m).
+    pub floor: f32,
+    /// Ceiling height relative to the sensor (m).
+    pub ceiling: f32,
+    /// Area of the free-space polygon (m², at least 1).
+    pub area: f64,
+}
+
+impl Room {
+    /// Whether a point at horizontal range `r` in sector `sector`, `z`
+    /// relative to the sensor, stands inside the room (see the module
+    /// doc).
+    pub fn holds(&self, r: f32, z: f32, sector: usize) -> bool {
+        let wall = self.walls[sector];
+        !(r < 0.3 || r > 0.9 * wall - 0.2 || z - self.floor < 0.1 || z > self.ceiling - 0.2)
+    }
+}
+
+/// The [`Room`] of a scan; None with no return beyond 0.3 m or no finite
+/// point within 8 m horizontally.
+pub(super) fn room_of(scan: &PolarScan) -> Option<Room> {
+    let (pts, (floor, ceiling)) = (scan.polygon()?, floor_and_ceiling_of(scan)?);
+    Some(Room {
+        walls: pts.iter().map(|p| p[0].hypot(p[1]) as f32).collect(),
+        floor,
+        ceiling,
+        area: slice::features(pts).area.max(1.0),
+    })
+}
+
 /// [`describe`] of a scan whose ranges and azimuths are known.
 pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
-    let points = scan.points;
-    let (Some(pts), Some((floor, ceiling))) = (scan.polygon(), floor_and_ceiling_of(scan)) else {
+    let Some(room) = room_of(scan) else {
         return empty_channels(&CHANNELS);
     };
-    let walls: Vec<f32> = pts.iter().map(|p| p[0].hypot(p[1]) as f32).collect();
-    let area = slice::features(pts).area.max(1.0);
-    let mut heights: Vec<f32> = voxel_lowest(points, 0.1)
+    let (walls, floor, area) = (&room.walls, room.floor, room.area);
+    let mut heights: Vec<f32> = voxel_lowest(scan.points, 0.1)
         .into_iter()
         .filter_map(|p| {
-            let (r, h) = (p[0].hypot(p[1]), p[2] - floor);
-            let wall = walls[sector_of(&p, slice::SECTORS)];
-            let out = r < 0.3 || r > 0.9 * wall - 0.2 || h < 0.1 || p[2] > ceiling - 0.2;
-            (!out).then_some(h)
+            let r = p[0].hypot(p[1]);
+            room.holds(r, p[2], sector_of(&p, slice::SECTORS))
+                .then_some(p[2] - floor)
         })
         .collect();
     // Summed in sorted order: the same bits whatever the points' order.
@@ -188,7 +222,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
         0.0,
         2.5,
     ));
-    for shares in levels_shares_of(scan, &walls, floor, LEVELS) {
+    for shares in levels_shares_of(scan, walls, floor, LEVELS) {
         let mut h = vec![0f32; BINS];
         for &s in &shares {
             soft_bin(&mut h, s as f64 * (BINS - 1) as f64, 1.0);

@@ -6,6 +6,7 @@
 
 pub mod alignment;
 pub mod clutter;
+pub mod columns;
 pub mod directions;
 pub mod esf;
 pub mod height_range;

@@ -8,16 +8,16 @@
 //! compares as the absolute difference of the feature over its range.
 //!
 //! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`], [`m2dp`].
+//! [`clutter`], [`m2dp`], [`columns`].
 
 use super::polar::PolarScan;
-use super::{clutter, esf, height_range, m2dp, ring, slice};
+use super::{clutter, columns, esf, height_range, m2dp, ring, slice};
 use crate::cloud::is_finite;
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::{Deserialize, Serialize};
 
 /// Most parts one descriptor may have (one of each kind).
-pub const MAX_PARTS: usize = 6;
+pub const MAX_PARTS: usize = 7;
 
 /// Which extra part.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -38,6 +38,9 @@ pub enum PartKind {
     /// The first singular vectors of a scan's projections onto 64 planes
     /// (M2DP, He et al. 2016; [`m2dp`]).
     M2dp,
+    /// What stands in each azimuth sector, from the floor up: top, extent
+    /// and bottom of the room's contents ([`columns`]).
+    Columns,
 }
 
 impl PartKind {
@@ -49,6 +52,7 @@ impl PartKind {
         PartKind::Ring,
         PartKind::Clutter,
         PartKind::M2dp,
+        PartKind::Columns,
     ];
 
     /// Position in [`PartKind::ALL`].
@@ -65,6 +69,7 @@ impl PartKind {
             PartKind::Ring => &ring::CHANNELS,
             PartKind::Clutter => &clutter::CHANNELS,
             PartKind::M2dp => &m2dp::CHANNELS,
+            PartKind::Columns => &columns::CHANNELS,
         }
     }
 
@@ -94,6 +99,7 @@ impl PartKind {
             PartKind::Ring => ring::describe_scan(scan),
             PartKind::Clutter => clutter::describe_scan(scan),
             PartKind::M2dp => m2dp::describe(points),
+            PartKind::Columns => columns::describe_scan(scan),
         };
         debug_assert_eq!(v.len(), self.len());
         v

@@ -397,7 +397,9 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
 /// Re-recorded once more when the slice's vertex of a sector stopped
 /// depending on the order of returns at the same range (ties go to the
 /// larger x, y): 13 real files' slice and clutter parts changed, every
-/// other digest stayed.
+/// other digest stayed. The columns part's 28 were added when it came
+/// (round 8), and the clutter part's room test moved into a function it
+/// shares with it: every other digest stayed.
 /// With PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
 ///
 /// The digests pin exact f32 bits, and so the platform's `f32::hypot`,
