@@ -31,6 +31,7 @@ mod families;
 use families::*;
 #[path = "common/real.rs"]
 mod real;
+use real::{real_rows, real_table, RealRow};
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
@@ -86,17 +87,6 @@ struct SiteSet {
 
 type Part = site_rounds::Part<FamilySet, SiteSet>;
 
-/// Same-place retrieval on the real scans (tests/data/real/groups.csv).
-#[derive(Serialize, Deserialize, Clone)]
-struct RealRow {
-    preset: String,
-    scans: usize,
-    same_place: usize,
-    /// Scans whose nearest other scan is of another place (or the reason
-    /// none could be described).
-    wrong: Vec<String>,
-}
-
 #[derive(Serialize, Deserialize)]
 struct Report {
     presets: Vec<(String, Vec<String>)>,
@@ -117,29 +107,6 @@ fn round_presets(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
         }
     }
     Ok(presets)
-}
-
-/// Real-scan retrieval for every preset of the round.
-fn real_rows(presets: &[(String, Vec<String>)]) -> Res<Vec<RealRow>> {
-    let scans = real::real_scans();
-    let mut names: Vec<&String> = presets.iter().flat_map(|p| &p.1).collect();
-    names.sort();
-    names.dedup();
-    let mut rows = vec![];
-    for name in names {
-        let p = DescriptorParams::preset(name)?;
-        let (same_place, wrong) = match real::wrong_places(&scans, &p)? {
-            Ok(wrong) => (scans.len() - wrong.len(), wrong),
-            Err(e) => (0, vec![format!("cannot describe every scan: {e}")]),
-        };
-        rows.push(RealRow {
-            preset: name.clone(),
-            scans: scans.len(),
-            same_place,
-            wrong,
-        });
-    }
-    Ok(rows)
 }
 
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
@@ -277,23 +244,6 @@ fn site_table(o: &mut String, sites: &[SiteSet]) -> Res<()> {
         low(|f| f.hk_trials.accuracy),
         low(|f| f.hk_trials.lowest),
     )?;
-    Ok(())
-}
-
-fn real_table(o: &mut String, rows: &[RealRow]) -> Res<()> {
-    writeln!(o, "| preset | same place | wrong |\n|---|---|---|")?;
-    for r in rows {
-        let wrong = if r.wrong.is_empty() {
-            "-".into()
-        } else {
-            r.wrong.join(", ")
-        };
-        writeln!(
-            o,
-            "| `{}` | {} of {} | {wrong} |",
-            r.preset, r.same_place, r.scans
-        )?;
-    }
     Ok(())
 }
 

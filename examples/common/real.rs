@@ -4,6 +4,7 @@
 use placecat::cluster::Space;
 use placecat::{describe, io, DescriptorParams, DistanceOptions};
 use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
 
 /// (file, place, points) for each row of groups.csv; empty (with a note on
 /// stderr) when the folder is missing.
@@ -47,4 +48,62 @@ pub fn wrong_places(
         .filter(|&i| m.nearest_other(i).is_none_or(|j| scans[j].1 != scans[i].1))
         .map(|i| scans[i].0.clone())
         .collect()))
+}
+
+/// Same-place retrieval on the real scans (tests/data/real/groups.csv).
+#[allow(dead_code)] // the rounds that compare presets (near_ranges.rs, columns.rs)
+#[derive(Serialize, Deserialize, Clone)]
+pub struct RealRow {
+    pub preset: String,
+    pub scans: usize,
+    pub same_place: usize,
+    /// Scans whose nearest other scan is of another place (or the reason
+    /// none could be described).
+    pub wrong: Vec<String>,
+}
+
+/// Real-scan retrieval for every preset of the round.
+#[allow(dead_code)]
+pub fn real_rows(
+    presets: &[(String, Vec<String>)],
+) -> Result<Vec<RealRow>, Box<dyn std::error::Error>> {
+    let scans = real_scans();
+    let mut names: Vec<&String> = presets.iter().flat_map(|p| &p.1).collect();
+    names.sort();
+    names.dedup();
+    let mut rows = vec![];
+    for name in names {
+        let p = DescriptorParams::preset(name)?;
+        let (same_place, wrong) = match wrong_places(&scans, &p)? {
+            Ok(wrong) => (scans.len() - wrong.len(), wrong),
+            Err(e) => (0, vec![format!("cannot describe every scan: {e}")]),
+        };
+        rows.push(RealRow {
+            preset: name.clone(),
+            scans: scans.len(),
+            same_place,
+            wrong,
+        });
+    }
+    Ok(rows)
+}
+
+/// [`real_rows`] as a markdown table.
+#[allow(dead_code)]
+pub fn real_table(o: &mut String, rows: &[RealRow]) -> Result<(), Box<dyn std::error::Error>> {
+    use std::fmt::Write;
+    writeln!(o, "| preset | same place | wrong |\n|---|---|---|")?;
+    for r in rows {
+        let wrong = if r.wrong.is_empty() {
+            "-".into()
+        } else {
+            r.wrong.join(", ")
+        };
+        writeln!(
+            o,
+            "| `{}` | {} of {} | {wrong} |",
+            r.preset, r.same_place, r.scans
+        )?;
+    }
+    Ok(())
 }

@@ -6,7 +6,7 @@
 
 use crate::families::{sim_params, Family, Sensor};
 use placecat::eval::evaluate;
-use placecat::sim::Simulation;
+use placecat::sim::{SceneKind, Simulation};
 use placecat::*;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -60,6 +60,49 @@ pub struct DescribedSet {
     pub kinds: usize,
     pub scans: usize,
     pub presets: Vec<(String, DescriptorParams, Vec<Descriptor>)>,
+    /// The neighbours a scan's room-level 1-NN may not use: indoors its own
+    /// room's scans; along a route those within [`ROUTE_WINDOW`] scans at
+    /// the default density of 300 a route.
+    #[allow(dead_code)] // read by the rounds that report 1-NN (columns.rs)
+    pub apart: Apart,
+}
+
+/// Neighbours 25 scans (of 300 a route) either side are of the same
+/// stretch of route (issue 18's "no neighbour within 25 scans").
+pub const ROUTE_WINDOW: usize = 25;
+
+/// What room-level 1-NN leaves out of a scan's neighbours.
+#[allow(dead_code)]
+pub enum Apart {
+    /// The scans of the same room (its room id).
+    Rooms(Vec<usize>),
+    /// The scans within this many along the route.
+    Window(usize),
+}
+
+#[allow(dead_code)]
+impl Apart {
+    /// Whether scan `j` may be scan `i`'s neighbour.
+    pub fn allows(&self, i: usize, j: usize) -> bool {
+        match self {
+            Apart::Rooms(r) => r[i] != r[j],
+            Apart::Window(w) => i.abs_diff(j) > *w,
+        }
+    }
+}
+
+/// The share of scans whose nearest allowed neighbour is of their kind.
+#[allow(dead_code)]
+pub fn room_level_nn(m: &DistanceMatrix, truth: &[String], apart: &Apart) -> f64 {
+    let hits = (0..m.n)
+        .filter(|&i| {
+            (0..m.n)
+                .filter(|&j| j != i && apart.allows(i, j))
+                .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)))
+                .is_some_and(|j| truth[i] == truth[j])
+        })
+        .count();
+    hits as f64 / m.n as f64
 }
 
 pub fn describe_set(
@@ -96,7 +139,13 @@ pub fn describe_set(
             described.push((presets[j].clone(), p, ds));
         }
     }
+    let apart = if f.scene == SceneKind::Warehouse || f.scene == SceneKind::Outdoor {
+        Apart::Window((ROUTE_WINDOW * sim.len()).div_ceil(placecat::sim::DEFAULT_SEQUENCE_SCANS))
+    } else {
+        Apart::Rooms((0..sim.len()).map(|i| sim.room(i)).collect())
+    };
     Ok(DescribedSet {
+        apart,
         truth,
         kinds: kinds.len(),
         scans: sim.len(),
