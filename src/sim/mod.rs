@@ -14,12 +14,16 @@
 //!   evaluation while its descriptors were being built, by another hand;
 //!   none was tuned on it); `school`: floors of classrooms, a library, a
 //!   cafeteria and a staff room ([`school`], written after the
-//!   descriptors were committed).
+//!   descriptors were committed); `hospital`: ward floors of patient
+//!   rooms, a nurse station, treatment rooms and a day room off a corridor
+//!   with handrails ([`hospital`], written for issue 18's eighth round by
+//!   another hand).
 //!
 //! Sensors ride on a vehicle: on uneven ground they keep their height above
 //! the ground under the wheels and tilt with it (see [`terrain`]).
 
 pub mod geometry;
+pub mod hospital;
 pub mod lidar;
 pub mod office_floor;
 pub mod plans;
@@ -55,6 +59,9 @@ pub enum SceneKind {
     /// School floors: corridors with lockers, classrooms, a library, a
     /// cafeteria and a staff room.
     School,
+    /// Hospital ward floors: corridors with handrails, patient rooms, a
+    /// nurse station, treatment rooms and a day room.
+    Hospital,
 }
 
 impl std::str::FromStr for SceneKind {
@@ -66,8 +73,9 @@ impl std::str::FromStr for SceneKind {
             "outdoor" => Ok(SceneKind::Outdoor),
             "office-floor" => Ok(SceneKind::OfficeFloor),
             "school" => Ok(SceneKind::School),
+            "hospital" => Ok(SceneKind::Hospital),
             other => invalid(format!(
-                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school)"
+                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital)"
             )),
         }
     }
@@ -138,11 +146,11 @@ impl SimParams {
             seed,
             scans: match scene {
                 SceneKind::Indoor => 40,
-                SceneKind::OfficeFloor | SceneKind::School => 24,
+                SceneKind::OfficeFloor | SceneKind::School | SceneKind::Hospital => 24,
                 _ => DEFAULT_SEQUENCE_SCANS,
             },
             scans_per_room: match scene {
-                SceneKind::OfficeFloor | SceneKind::School => 3,
+                SceneKind::OfficeFloor | SceneKind::School | SceneKind::Hospital => 3,
                 _ => 5,
             },
             lidar: None,
@@ -157,6 +165,7 @@ impl SimParams {
             SceneKind::Indoor => self.scans * scenes::INDOOR_KINDS.len(),
             SceneKind::OfficeFloor => self.scans * office_floor::OFFICE_FLOOR_KINDS.len(),
             SceneKind::School => self.scans * school::SCHOOL_KINDS.len(),
+            SceneKind::Hospital => self.scans * hospital::HOSPITAL_KINDS.len(),
             _ => self.scans,
         }
     }
@@ -312,6 +321,9 @@ impl Simulation {
             }
             SceneKind::School => {
                 (scenes_out, shots) = office_floor::scans(&school::SCHOOL, params, &mut r);
+            }
+            SceneKind::Hospital => {
+                (scenes_out, shots) = office_floor::scans(&hospital::HOSPITAL, params, &mut r);
             }
         }
         Ok(Simulation {

@@ -1,6 +1,7 @@
 //! A scene family written for issue 18's evaluation while the new
 //! descriptors were being built (by another hand; none was tuned on it):
-//! office floors. [`super::school`] was written after they were committed. Each floor is a
+//! office floors. [`super::school`] was written after they were committed,
+//! [`super::hospital`] later by another hand. Each floor is a
 //! central corridor with a row of rooms on each side, doors open or shut
 //! into it, all under one ceiling; the rooms are private offices, meeting
 //! rooms, open-plan areas and restrooms (and storage closets, never
@@ -32,7 +33,8 @@ pub const OFFICE_FLOOR_KINDS: [&str; 5] = [
 
 /// What makes a kind of floor: its kinds, their sizes, which rooms every
 /// floor has, and how rooms and the corridor are furnished. The office
-/// floor is [`OFFICE`]; [`super::school`] has another.
+/// floor is [`OFFICE`]; [`super::school`] and [`super::hospital`] have
+/// others.
 pub struct FloorPlan {
     /// The scanned kinds, the corridor first.
     pub kinds: [&'static str; 5],

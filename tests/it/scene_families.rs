@@ -1,9 +1,10 @@
 //! The scene families and sensors of the descriptor evaluation (issue 18):
-//! sensors by beam count, sensor heights, other room plans and the office
-//! floors, checked against geometry known in advance.
+//! sensors by beam count, sensor heights, other room plans and the office,
+//! school and hospital floors, checked against geometry known in advance.
 
 use crate::cli_common::{fails, placecat, succeeds, tmp};
 use placecat::sim::geometry::{Ray, Shape};
+use placecat::sim::hospital::{HOSPITAL, HOSPITAL_KINDS};
 use placecat::sim::office_floor::{self, FloorPlan, OFFICE, OFFICE_FLOOR_KINDS};
 use placecat::sim::school::{SCHOOL, SCHOOL_KINDS};
 use placecat::sim::sensors::BEAM_COUNTS;
@@ -104,8 +105,8 @@ fn nearest(shapes: &[Shape], ray: &Ray) -> f64 {
 }
 
 #[test]
-fn office_and_school_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
-    for plan in [&OFFICE, &SCHOOL] {
+fn office_school_and_hospital_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
+    for plan in [&OFFICE, &SCHOOL, &HOSPITAL] {
         for seed in 1..=4 {
             check_floor(plan, seed);
         }
@@ -243,30 +244,24 @@ fn varied_plans_give_l_shaped_rooms_and_keep_scans_out_of_the_cut() {
     );
 }
 
+/// `placecat simulate` of a floor `scene` into `dir`, two scans a kind
+/// in rooms of one, 16 beams, and `extra`: its labels.csv.
+fn simulate_floor(dir: &std::path::Path, scene: &str, seed: &str, extra: &[&str]) -> String {
+    succeeds(
+        placecat()
+            .args(["simulate", "--scene", scene, "--seed", seed, "--scans", "2"])
+            .args(["--scans-per-room", "1", "--beams", "16"])
+            .args(extra)
+            .arg("-o")
+            .arg(dir),
+    );
+    std::fs::read_to_string(dir.join("labels.csv")).unwrap()
+}
+
 #[test]
 fn simulate_takes_a_sensor_a_height_and_the_office_floor() {
     let dir = tmp("families");
-    succeeds(
-        placecat()
-            .args([
-                "simulate",
-                "--scene",
-                "office-floor",
-                "--seed",
-                "4",
-                "--scans",
-                "2",
-                "--scans-per-room",
-                "1",
-                "--beams",
-                "16",
-                "--sensor-height",
-                "0.3",
-                "-o",
-            ])
-            .arg(&dir),
-    );
-    let labels = std::fs::read_to_string(dir.join("labels.csv")).unwrap();
+    let labels = simulate_floor(&dir, "office-floor", "4", &["--sensor-height", "0.3"]);
     assert_eq!(labels.lines().count(), 1 + 2 * OFFICE_FLOOR_KINDS.len());
     assert!(labels.contains("open_plan") && labels.contains("restroom"));
     let err = fails(
@@ -277,11 +272,177 @@ fn simulate_takes_a_sensor_a_height_and_the_office_floor() {
     assert!(err.contains("24 beams"), "{err}");
     let err = fails(
         placecat()
-            .args(["simulate", "--scene", "hospital", "-o"])
+            .args(["simulate", "--scene", "airport", "-o"])
             .arg(&dir),
     );
     assert!(
-        err.contains("office-floor") && err.contains("school"),
+        err.contains("office-floor") && err.contains("school") && err.contains("hospital"),
         "{err}"
     );
+}
+
+#[test]
+fn hospital_floors_keep_the_school_defaults_and_hold_every_kind() {
+    let p = SimParams::new(SceneKind::Hospital, 1);
+    assert_eq!((p.scans, p.scans_per_room), (24, 3));
+    assert_eq!(p.total(), 24 * HOSPITAL_KINDS.len());
+    assert_eq!(
+        "hospital".parse::<SceneKind>().unwrap(),
+        SceneKind::Hospital
+    );
+    assert_eq!(HOSPITAL_KINDS[0], "corridor");
+    assert_eq!(HOSPITAL_KINDS.len(), 5);
+    for seed in 1..=6 {
+        let mut r = placecat::rng::rng(seed);
+        let floor = office_floor::floor(&HOSPITAL, &mut r);
+        // A ward: more patient rooms than any other room kind, one nurse
+        // station open to the corridor, a corridor two beds wide.
+        let count = |kind: &str| floor.rooms.iter().filter(|r| r.kind == kind).count();
+        assert!(count("patient_room") >= 2, "seed {seed}");
+        for kind in ["nurse_station", "treatment_room", "day_room"] {
+            assert!(count("patient_room") > count(kind), "seed {seed}: {kind}");
+        }
+        let cw = floor.rooms[0].max[1] - floor.rooms[0].min[1];
+        assert!((2.4..=3.0).contains(&cw), "seed {seed}: corridor {cw} m");
+        assert!((2.7..=3.1).contains(&floor.height), "seed {seed}");
+        // Handrails at 0.86-0.92 m run along both corridor walls.
+        for wall in [0.0, cw - 0.09] {
+            let rail: f64 = floor
+                .shapes
+                .iter()
+                .filter_map(|s| match *s {
+                    Shape::Cuboid { min, max }
+                        if min[2] == 0.86
+                            && (min[1] - wall).abs() < 1e-9
+                            && max[1] - min[1] < 0.1 =>
+                    {
+                        Some(max[0] - min[0])
+                    }
+                    _ => None,
+                })
+                .sum();
+            let length = floor.rooms[0].max[0];
+            assert!(
+                rail > 0.6 * length,
+                "seed {seed}: {rail} of {length} m at {wall}"
+            );
+        }
+    }
+}
+
+#[test]
+fn hospital_scans_are_labelled_counted_and_stand_in_their_rooms() {
+    let seed = 2;
+    let edit = |p: &mut SimParams| {
+        p.scans = 4;
+        p.scans_per_room = 2;
+        p.lidar = Some(LidarParams::with_beams(16).unwrap());
+    };
+    let s = sim(SceneKind::Hospital, seed, edit);
+    assert_eq!(s.len(), 4 * HOSPITAL_KINDS.len());
+    for (k, kind) in HOSPITAL_KINDS.iter().enumerate() {
+        // The kinds in order, four scans each.
+        for i in 4 * k..4 * k + 4 {
+            assert_eq!(s.label(i), *kind, "scan {i}");
+        }
+    }
+    // Two scans a room, rooms numbered in order: 0, 0, 1, 1, ...
+    let rooms: Vec<usize> = (0..s.len()).map(|i| s.room(i)).collect();
+    assert_eq!(rooms, (0..s.len()).map(|i| i / 2).collect::<Vec<_>>());
+    // The same seed gives the same plan and the same points; another
+    // seed other poses.
+    let again = sim(SceneKind::Hospital, seed, edit);
+    let other = sim(SceneKind::Hospital, seed + 1, edit);
+    for i in 0..s.len() {
+        assert_eq!(s.sensor_pose(i), again.sensor_pose(i));
+        assert_eq!(s.room(i), again.room(i));
+        assert_ne!(s.sensor_pose(i).position, other.sensor_pose(i).position);
+    }
+    for i in [0, 7, 19] {
+        assert_eq!(s.scan(i), again.scan(i));
+    }
+    // Every scan stands in a room of its kind, 0.5 m from its walls, at
+    // 1.0-1.3 m; the scans of a room id share one room. The floors are
+    // the ones the simulation built: two (rooms of a kind), drawn first
+    // from the seed's stream.
+    let mut r = placecat::rng::rng(seed);
+    let floors: Vec<_> = (0..2)
+        .map(|_| office_floor::floor(&HOSPITAL, &mut r))
+        .collect();
+    let (mut seen, mut on_floor) = (std::collections::BTreeMap::new(), 0);
+    for i in 0..s.len() {
+        let fi = floors
+            .iter()
+            .position(|f| f.shapes == s.shapes(i))
+            .expect("a floor of the seed");
+        let [x, y, z] = s.sensor_pose(i).position;
+        assert!((1.0..1.3).contains(&z), "scan {i}: {z} m");
+        let k = floors[fi]
+            .rooms
+            .iter()
+            .position(|room| {
+                room.kind == s.label(i)
+                    && x >= room.min[0] + 0.5
+                    && x <= room.max[0] - 0.5
+                    && y >= room.min[1] + 0.5
+                    && y <= room.max[1] - 0.5
+            })
+            .unwrap_or_else(|| {
+                panic!(
+                    "scan {i} ({}) at {x}, {y} in no room of its kind",
+                    s.label(i)
+                )
+            });
+        assert_eq!(
+            *seen.entry(s.room(i)).or_insert((fi, k)),
+            (fi, k),
+            "scan {i}"
+        );
+        // A corridor scan sees along the corridor, near to its farther
+        // end (over what is parked in it).
+        let points = s.scan(i).points;
+        assert!(points.len() > 1000, "scan {i}: {} points", points.len());
+        let far = points
+            .iter()
+            .map(|p| (p[0] as f64).hypot(p[1] as f64))
+            .fold(0.0, f64::max);
+        if s.label(i) == "corridor" {
+            let end = x.max(floors[fi].rooms[0].max[0] - x);
+            assert!(far > 0.9 * end && end > 5.0, "scan {i}: {far} of {end} m");
+        }
+        // Nothing below the floor; 16 beams (+-15 degrees) meet it 4-5 m
+        // out, which furniture hides from a few spots.
+        let lowest = points
+            .iter()
+            .map(|p| p[2] as f64)
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            lowest > -z - 0.05,
+            "scan {i}: {lowest} m under a sensor at {z} m"
+        );
+        if lowest < -z + 0.05 {
+            on_floor += 1;
+        }
+    }
+    assert_eq!(seen.len(), 2 * HOSPITAL_KINDS.len());
+    assert!(
+        on_floor >= s.len() * 3 / 4,
+        "{on_floor} scans see the floor"
+    );
+}
+
+#[test]
+fn simulate_writes_hospital_floors() {
+    let labels = simulate_floor(&tmp("hospital"), "hospital", "5", &[]);
+    assert_eq!(labels.lines().count(), 1 + 2 * HOSPITAL_KINDS.len());
+    for kind in HOSPITAL_KINDS {
+        assert_eq!(
+            labels
+                .lines()
+                .filter(|l| l.ends_with(&format!(",{kind}")))
+                .count(),
+            2,
+            "{kind}"
+        );
+    }
 }

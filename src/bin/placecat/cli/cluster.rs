@@ -413,8 +413,8 @@ pub struct SensorArgs {
     /// small robot, 1.8 for a car roof. Default: the scene's own.
     #[arg(long)]
     sensor_height: Option<f64>,
-    /// indoor, office-floor, school: scans taken in each room (default 5
-    /// indoor, 3 on office and school floors).
+    /// indoor, office-floor, school, hospital: scans taken in each room
+    /// (default 5 indoor, 3 on office, school and hospital floors).
     #[arg(long)]
     scans_per_room: Option<usize>,
 }
