@@ -80,6 +80,13 @@ fn nearest_scan_is_from_the_same_place_outdoor_near_preset() {
     check(DescriptorParams::outdoor_near());
 }
 
+/// The eighth round's indoor preset (indoor_clutter plus the columns
+/// part): 18 of 18 (docs/columns.md).
+#[test]
+fn nearest_scan_is_from_the_same_place_indoor_columns_preset() {
+    check(DescriptorParams::indoor_columns());
+}
+
 /// The presets whose slice and clutter parts changed when a sector's
 /// vertex among returns at the same range stopped depending on the points'
 /// order (the real files' quantised coordinates tie often): their
