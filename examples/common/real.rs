@@ -68,6 +68,11 @@ pub fn real_rows(
     presets: &[(String, Vec<String>)],
 ) -> Result<Vec<RealRow>, Box<dyn std::error::Error>> {
     let scans = real_scans();
+    if scans.is_empty() {
+        return Err(
+            "no real scans (tests/data/real/groups.csv): retrieval cannot be reported".into(),
+        );
+    }
     let mut names: Vec<&String> = presets.iter().flat_map(|p| &p.1).collect();
     names.sort();
     names.dedup();

@@ -220,6 +220,15 @@ pub fn round_main<R: Serialize + serde::de::DeserializeOwned>(
         return Ok(());
     }
     if has("--dev") {
+        // The decision was read from the development run before the test
+        // run: once that has run, its development report stays as it was.
+        if docs.join(files.report).exists() {
+            return Err(format!(
+                "docs/{} exists: the test seeds have run, so docs/{} is not written again",
+                files.report, files.dev
+            )
+            .into());
+        }
         let r = dev()?;
         std::fs::write(docs.join(files.dev), serde_json::to_string_pretty(&r)?)?;
         println!("{}", dev_tables(&r)?);

@@ -172,8 +172,10 @@ impl Room {
     /// relative to the sensor, stands inside the room (see the module
     /// doc).
     pub fn holds(&self, r: f32, z: f32, sector: usize) -> bool {
+        // Written positively, so that a NaN is never inside (the same
+        // answer as the old negated test for every finite point).
         let wall = self.walls[sector];
-        !(r < 0.3 || r > 0.9 * wall - 0.2 || z - self.floor < 0.1 || z > self.ceiling - 0.2)
+        r >= 0.3 && r <= 0.9 * wall - 0.2 && z - self.floor >= 0.1 && z <= self.ceiling - 0.2
     }
 }
 

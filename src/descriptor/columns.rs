@@ -20,7 +20,11 @@
 //!
 //! - the top: the highest inside point's height (0 to 2.5 m, 26 bins);
 //! - the extent: how many of the 8 layers hold a point (1 to 8, 8 bins);
-//! - the bottom: the lowest layer that holds one (0 to 7, 8 bins);
+//! - the bottom: the lowest layer that holds one (0 to 7, 8 bins; the
+//!   room test drops what lies within 0.1 m of the floor, so layer 0 holds
+//!   0.1 to 0.325 m, and a partition raised 0.15 m falls in it as a
+//!   bookcase on the floor does: the bottom tells a desk top or a shelf
+//!   from what stands on the floor, not a raised partition from it);
 //!
 //! each a histogram over the sectors that hold any inside point, and the
 //! share of sectors that do (0 to 1, 16 bins). A scan with no inside point
@@ -93,7 +97,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     };
     let sectors = room.walls.len();
     let cols = columns(scan, &room);
-    if cols.is_empty() || sectors == 0 {
+    if cols.is_empty() {
         return empty_channels(&CHANNELS);
     }
     let mut top = vec![0f32; TOP_BINS];

@@ -176,7 +176,7 @@ pub const PRESET_NOTES: [(&str, &str); 12] = [
     ),
     (
         "indoor_columns",
-        "indoor_clutter, plus how high what stands in each direction reaches and whether it stands on the floor: room kinds of offices and schools (docs/columns.md)",
+        "indoor_clutter, plus how high and over how many layers what stands in each direction reaches: room kinds of offices and schools (docs/columns.md)",
     ),
 ];
 
