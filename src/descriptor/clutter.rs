@@ -79,10 +79,12 @@ pub const CHANNELS: [usize; 2 + 2 * LEVELS.len()] = [
 /// 2nd and 98th percentiles of the heights of its points within 8 m
 /// horizontally; None with no such point.
 pub fn floor_and_ceiling(points: &[[f32; 3]]) -> Option<(f32, f32)> {
-    floor_and_ceiling_of(&PolarScan::new(points))
+    PolarScan::new(points).floor_and_ceiling()
 }
 
-fn floor_and_ceiling_of(scan: &PolarScan) -> Option<(f32, f32)> {
+/// [`floor_and_ceiling`] of a scan whose ranges are known (cached by
+/// [`PolarScan::floor_and_ceiling`], which the parts call).
+pub(super) fn floor_and_ceiling_of(scan: &PolarScan) -> Option<(f32, f32)> {
     let mut z: Vec<f32> = scan
         .points
         .iter()
@@ -182,7 +184,7 @@ impl Room {
 /// The [`Room`] of a scan; None with no return beyond 0.3 m or no finite
 /// point within 8 m horizontally.
 pub(super) fn room_of(scan: &PolarScan) -> Option<Room> {
-    let (pts, (floor, ceiling)) = (scan.polygon()?, floor_and_ceiling_of(scan)?);
+    let (pts, (floor, ceiling)) = (scan.polygon()?, scan.floor_and_ceiling()?);
     Some(Room {
         walls: pts.iter().map(|p| p[0].hypot(p[1]) as f32).collect(),
         floor,

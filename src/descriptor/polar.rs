@@ -1,12 +1,12 @@
 //! A scan's points with their horizontal range and azimuth, computed once
 //! for every part that needs them ([`slice`](mod@super::slice),
-//! [`ring`](super::ring), [`clutter`](super::clutter)): each used to take
+//! [`ring`](super::ring), [`clutter`]): each used to take
 //! its own `hypot` and `atan2` of every point, and the slice's polygon was
 //! made twice when the clutter part came with it. The values are the very
 //! ones each part computed, so descriptors stay bit for bit the same
 //! (tests/it/parts.rs checks it).
 
-use super::slice;
+use super::{clutter, slice};
 use std::cell::OnceCell;
 
 /// Points, their ranges and azimuths, and the free-space polygon made on
@@ -20,6 +20,9 @@ pub struct PolarScan<'a> {
     angle: Vec<f32>,
     /// [`slice::sector_points_of`], made once.
     polygon: OnceCell<Option<Vec<[f64; 2]>>>,
+    /// The floor and ceiling heights, found once for the parts that
+    /// measure from them (`clutter` and `columns`).
+    floor_and_ceiling: OnceCell<Option<(f32, f32)>>,
 }
 
 impl<'a> PolarScan<'a> {
@@ -35,6 +38,7 @@ impl<'a> PolarScan<'a> {
                 .map(|p| p[1].atan2(p[0]) + std::f32::consts::PI)
                 .collect(),
             polygon: OnceCell::new(),
+            floor_and_ceiling: OnceCell::new(),
         }
     }
 
@@ -57,6 +61,14 @@ impl<'a> PolarScan<'a> {
         self.polygon
             .get_or_init(|| slice::sector_points_of(self))
             .as_deref()
+    }
+
+    /// The floor and ceiling heights relative to the sensor
+    /// ([`clutter::floor_and_ceiling`]), found on first use.
+    pub fn floor_and_ceiling(&self) -> Option<(f32, f32)> {
+        *self
+            .floor_and_ceiling
+            .get_or_init(|| clutter::floor_and_ceiling_of(self))
     }
 }
 
