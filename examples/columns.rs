@@ -38,6 +38,9 @@ use site_rounds::*;
 #[path = "common/preset_rounds.rs"]
 mod preset_rounds;
 use preset_rounds::*;
+#[path = "common/family_sets.rs"]
+mod family_sets;
+use family_sets::*;
 
 /// Fixed in docs/seeds.md ("issue 18, eighth round") before any run.
 const FAMILY_DEV: &[u64] = &[1, 2, 3, 4, 5, 6];
@@ -52,16 +55,6 @@ const FILES: RoundFiles = RoundFiles {
     report: "columns.json",
     md: "columns.md",
 };
-
-#[derive(Serialize, Deserialize, Clone)]
-struct FamilySet {
-    family: String,
-    sensor: String,
-    seed: u64,
-    scans: usize,
-    /// Each preset's clusterings and its room-level 1-NN.
-    presets: Vec<(String, Figures, f64)>,
-}
 
 type Part = site_rounds::Part<FamilySet, ()>;
 
@@ -118,43 +111,6 @@ fn fresh_sets() -> Res<Vec<FamilySet>> {
         }
     }
     Ok(sets)
-}
-
-fn entry<'a>(s: &'a FamilySet, p: &str) -> Option<&'a (String, Figures, f64)> {
-    s.presets.iter().find(|q| q.0 == p)
-}
-
-fn family_table(
-    o: &mut String,
-    presets: &[(String, Vec<String>)],
-    all: &[FamilySet],
-    sensor_filter: impl Fn(&str) -> bool,
-) -> Res<()> {
-    writeln!(o, "| family | sensor | preset | stride k-means | k-means++ best of 10 | hk-means++, 10 trials | lowest tree | room-level 1-NN | target |\n|---|---|---|---|---|---|---|---|---|")?;
-    fn key(s: &FamilySet) -> (&str, &str) {
-        (s.family.as_str(), s.sensor.as_str())
-    }
-    each_row(
-        presets,
-        all,
-        key,
-        sensor_filter,
-        |family, sensor, sets, i, p| {
-            let of = |f: fn(&Figures) -> f64| move |s: &FamilySet| entry(s, p).map(|e| f(&e.1));
-            let tag = if i == 0 { " (paper)" } else { "" };
-            writeln!(
-                o,
-                "| {family} | {sensor} | `{p}`{tag} | {} | {} | {} | {} | {} | {} |",
-                pct(mean_over(sets, of(|f| f.stride.accuracy))),
-                pct(mean_over(sets, of(|f| f.best_of_10.accuracy))),
-                pct(mean_over(sets, of(|f| f.hk_trials.accuracy))),
-                pct(lowest_over(sets, of(|f| f.hk_trials.lowest))),
-                pct(mean_over(sets, |s: &FamilySet| entry(s, p).map(|e| e.2))),
-                if i == 0 { "-" } else { target(family) },
-            )?;
-            Ok(())
-        },
-    )
 }
 
 /// Every set's stride k-means / best of 10 with the round's preset and the

@@ -2,8 +2,8 @@
 //! classify a new scan (each category's centre in descriptor space), with
 //! the descriptor parameters it was made with. Saved and loaded as JSON.
 
-use crate::descriptor::parts::cumulative_len;
-use crate::descriptor::{Descriptor, DescriptorParams};
+use crate::descriptor::parts::{cumulative_len, MAX_PARTS};
+use crate::descriptor::{Descriptor, DescriptorParams, Scale};
 use crate::distance::{
     check_shape, matrix_distance, pad, size_factor, unpad, DistanceOptions, Prepared, Space,
 };
@@ -51,6 +51,21 @@ pub struct LabelledModel {
     pub cols: usize,
     /// The named categories (at least one).
     pub categories: Vec<Category>,
+    /// With [`Scale::Median`] parameters, the weights the scans it was
+    /// built from gave (`distance::scale`): new scans are compared with
+    /// these, not with medians of their own. Absent otherwise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scaled_weights: Option<ScaledWeights>,
+}
+
+/// The weights of a median-scaled distance, as a space resolved them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ScaledWeights {
+    /// Delta's weight over its median.
+    pub ndt_weight: f32,
+    /// Each part kind's weight over its median, indexed by
+    /// [`PartKind::index`](crate::descriptor::PartKind::index).
+    pub part_weights: [f32; MAX_PARTS],
 }
 
 /// A model as read, before its checks.
@@ -61,6 +76,8 @@ struct ModelData {
     rows: usize,
     cols: usize,
     categories: Vec<Category>,
+    #[serde(default)]
+    scaled_weights: Option<ScaledWeights>,
 }
 
 impl TryFrom<ModelData> for LabelledModel {
@@ -80,6 +97,27 @@ impl TryFrom<ModelData> for LabelledModel {
         }
         if m.categories.is_empty() {
             return Err(Error::Mismatch("the model has no categories".into()));
+        }
+        match (m.params.scale, &m.scaled_weights) {
+            (Scale::Fixed, None) => {}
+            (Scale::Median, Some(w)) => {
+                let mut all = std::iter::once(w.ndt_weight).chain(w.part_weights);
+                if !all.all(|v| v.is_finite() && v >= 0.0) {
+                    return Err(Error::Mismatch(
+                        "the model's scaled weights must be finite and not negative".into(),
+                    ));
+                }
+            }
+            (Scale::Median, None) => {
+                return Err(Error::Mismatch(
+                    "the model's parameters scale by medians but it holds no scaled weights".into(),
+                ))
+            }
+            (Scale::Fixed, Some(_)) => {
+                return Err(Error::Mismatch(
+                    "the model holds scaled weights but its parameters do not scale".into(),
+                ))
+            }
         }
         let parts_len: usize = m.params.parts.iter().map(|p| cumulative_len(p.kind)).sum();
         for c in &m.categories {
@@ -107,6 +145,7 @@ impl TryFrom<ModelData> for LabelledModel {
             rows: m.rows,
             cols: m.cols,
             categories: m.categories,
+            scaled_weights: m.scaled_weights,
         })
     }
 }
@@ -212,12 +251,17 @@ impl LabelledModel {
                 parts: centre.parts,
             });
         }
+        let scaled_weights = (!params.scale.is_fixed()).then_some(ScaledWeights {
+            ndt_weight: space.options.ndt_weight,
+            part_weights: space.options.part_weights,
+        });
         Ok(LabelledModel {
             format: MODEL_FORMAT.into(),
             params: params.clone(),
             rows: first.rows,
             cols: first.cols,
             categories,
+            scaled_weights,
         })
     }
 
@@ -254,11 +298,26 @@ impl LabelledModel {
         }
     }
 
+    /// How new scans are compared with the centres: the parameters'
+    /// distance, with the scaled weights when the model has them.
+    fn distance_options(&self) -> DistanceOptions {
+        let opts = DistanceOptions::from(&self.params);
+        match self.scaled_weights {
+            Some(w) => DistanceOptions {
+                ndt_weight: w.ndt_weight,
+                part_weights: w.part_weights,
+                scale: Scale::Fixed,
+                ..opts
+            },
+            None => opts,
+        }
+    }
+
     /// The nearest category of a described scan.
     pub fn classify(&self, d: &Descriptor) -> Result<Classification> {
         check_shape((d.rows, d.cols), (self.rows, self.cols))?;
         d.validate_for(&self.params)?;
-        let p = Prepared::new(d, DistanceOptions::from(&self.params))?;
+        let p = Prepared::new(d, self.distance_options())?;
         let mut best: Option<Classification> = None;
         for c in &self.categories {
             let centre = pad(&c.centre, self.rows, p.stride);

@@ -193,11 +193,22 @@ pub fn every_set<T>(
     presets: &[(String, Vec<String>)],
     seeds: &[u64],
     what: &str,
+    each: impl FnMut(&Family, Sensor, u64, &[String]) -> Res<T>,
+) -> Res<(Vec<T>, f64)> {
+    every_set_of(crate::families::families(), presets, seeds, what, each)
+}
+
+/// [`every_set`] over `families`.
+pub fn every_set_of<T>(
+    families: Vec<Family>,
+    presets: &[(String, Vec<String>)],
+    seeds: &[u64],
+    what: &str,
     mut each: impl FnMut(&Family, Sensor, u64, &[String]) -> Res<T>,
 ) -> Res<(Vec<T>, f64)> {
     let t0 = std::time::Instant::now();
     let mut sets = vec![];
-    for f in crate::families::families() {
+    for f in families {
         let chosen = presets
             .iter()
             .find(|p| p.0 == f.name)

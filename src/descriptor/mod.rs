@@ -21,7 +21,7 @@ pub mod shape;
 pub mod slice;
 
 pub use params::{
-    preset_names, preset_note, Alignment, DescriptorParams, Metric, Normalisation, PRESETS,
+    preset_names, preset_note, Alignment, DescriptorParams, Metric, Normalisation, Scale, PRESETS,
     PRESET_NOTES,
 };
 pub use parts::{Part, PartKind, PartValues};

@@ -53,6 +53,27 @@ pub enum Metric {
     ChiSquared,
 }
 
+/// How the terms of the combined distance (Delta and each part) are sized
+/// before weighting (`distance::scale`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
+#[serde(rename_all = "snake_case")]
+pub enum Scale {
+    /// As they are: Delta as the paper defines it, each part in [0, 1].
+    #[default]
+    Fixed,
+    /// Each divided by its median over the collection's pairs of scans.
+    Median,
+}
+
+impl Scale {
+    /// True for [`Scale::Fixed`] (left out of JSON, so the presets of
+    /// earlier rounds read and write as before).
+    pub fn is_fixed(&self) -> bool {
+        *self == Scale::Fixed
+    }
+}
+
 /// Every parameter of the descriptor and its distance.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
@@ -100,6 +121,11 @@ pub struct DescriptorParams {
     /// (descriptor::parts); empty for the paper's descriptor.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub parts: Vec<Part>,
+    /// How Delta and each part's distance are sized before weighting
+    /// (`distance::scale`): as they are (the default, left out of JSON), or
+    /// by their median over the collection's pairs of scans.
+    #[serde(default, skip_serializing_if = "Scale::is_fixed")]
+    pub scale: Scale,
 }
 
 fn is_one(w: &f64) -> bool {
@@ -229,6 +255,7 @@ impl DescriptorParams {
             min_voxels: 20,
             ndt_weight: 1.0,
             parts: Vec::new(),
+            scale: Scale::Fixed,
         }
     }
 

@@ -16,11 +16,13 @@
 //! - `prepared`: descriptors normalised and padded once;
 //! - `kernel`: the one loop per metric, and Delta between prepared items;
 //! - `matrix`: the n x n Delta matrix;
-//! - `space`: prepared items with their metric, and cluster centres.
+//! - `space`: prepared items with their metric, and cluster centres;
+//! - `scale`: each term sized by its median over the collection (optional).
 
 mod kernel;
 mod matrix;
 mod prepared;
+pub mod scale;
 mod space;
 
 pub use kernel::{delta_prepared, matrix_distance, matrix_distance_below, size_factor};
@@ -29,7 +31,7 @@ pub use prepared::{normalise, pad, prepare_all, unpad, Prepared};
 pub use space::{Centre, Space};
 
 use crate::descriptor::parts::MAX_PARTS;
-use crate::descriptor::{Descriptor, DescriptorParams, Metric, Normalisation};
+use crate::descriptor::{Descriptor, DescriptorParams, Metric, Normalisation, Scale};
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 
@@ -47,6 +49,10 @@ pub struct DistanceOptions {
     /// [`PartKind::index`](crate::descriptor::PartKind::index) (0: not used).
     #[serde(default)]
     pub part_weights: [f32; MAX_PARTS],
+    /// How the terms are sized before weighting; a [`Space`] resolves
+    /// [`Scale::Median`] into weights ([`scale::resolve`]).
+    #[serde(default)]
+    pub scale: Scale,
 }
 
 fn one() -> f32 {
@@ -60,6 +66,7 @@ impl Default for DistanceOptions {
             metric: Metric::Paper,
             ndt_weight: 1.0,
             part_weights: [0.0; MAX_PARTS],
+            scale: Scale::Fixed,
         }
     }
 }
@@ -75,6 +82,7 @@ impl From<&DescriptorParams> for DistanceOptions {
             metric: p.metric,
             ndt_weight: p.ndt_weight as f32,
             part_weights,
+            scale: p.scale,
         }
     }
 }

@@ -16,6 +16,11 @@ pub struct Space {
     pub items: Vec<Prepared>,
     /// The metric every Delta here uses.
     pub metric: Metric,
+    /// The options the items were prepared with: the ones given, with
+    /// [`Scale::Median`](crate::descriptor::Scale::Median) resolved into
+    /// weights (`distance::scale`), so a model built here compares new
+    /// scans as the space does.
+    pub options: DistanceOptions,
 }
 
 /// A cluster centre: one normalised matrix and the members' mean |F|.
@@ -31,12 +36,15 @@ pub struct Centre {
 }
 
 impl Space {
-    /// Prepare every descriptor once with `opts`. Descriptors of different
-    /// shapes, or an invalid one (named by its index), are an error.
+    /// Prepare every descriptor once with `opts` (its median scale, if
+    /// any, taken over these descriptors). Descriptors of different shapes,
+    /// or an invalid one (named by its index), are an error.
     pub fn new(descriptors: &[Descriptor], opts: DistanceOptions) -> Result<Space> {
+        let options = super::scale::resolve(descriptors, opts)?;
         Ok(Space {
-            items: prepare_all(descriptors, opts)?,
-            metric: opts.metric,
+            items: prepare_all(descriptors, options)?,
+            metric: options.metric,
+            options,
         })
     }
 

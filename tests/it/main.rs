@@ -29,6 +29,7 @@ mod readers;
 mod readme;
 mod real_data;
 mod restarts;
+mod scaled;
 mod scene_families;
 mod simulator;
 mod survey;

@@ -51,6 +51,7 @@ pub(crate) fn reference(space: &Space, m: usize, seed: u64) -> Space {
     Space {
         items,
         metric: space.metric,
+        options: space.options,
     }
 }
 

@@ -1,0 +1,310 @@
+//! Issue 18, ninth round: each term of the combined distance (Delta and
+//! every part) divided by its median over the collection's pairs of scans
+//! before it is weighted (`distance::scale`, `Scale::Median`), against each
+//! family's presets of the earlier rounds and the eighth round's
+//! `indoor_columns`.
+//!
+//!     cargo run --release --example scaled -- --medians  # dev seeds: each term's median
+//!     cargo run --release --example scaled -- --dev      # dev seeds -> docs/scaled-dev.json
+//!     cargo run --release --example scaled               # test seeds, once: docs/scaled.{json,md}
+//!     ... -- --render   # docs/scaled.md again from docs/scaled.json
+//!
+//! Seeds were fixed in docs/seeds.md ("issue 18, ninth round") before any
+//! run: issue 18's families (examples/common/families.rs, every sensor)
+//! and the hospital floors, on seeds 1-6 and 381-385. Each set at its true
+//! number of kinds: stride k-means, k-means++ best of 10, hierarchical
+//! k-means++ with 10 trial splits (tree seeds 0-9: mean and lowest), and
+//! room-level 1-NN. The test run refuses to overwrite its report.
+
+use placecat::descriptor::{DescriptorParams, Part, PartKind, Scale};
+use placecat::distance::scale::resolve;
+use placecat::DistanceOptions;
+use serde::{Deserialize, Serialize};
+use std::fmt::Write;
+use std::path::Path;
+
+#[path = "common/families.rs"]
+mod families;
+use families::*;
+#[path = "common/real.rs"]
+mod real;
+use real::{real_rows, real_table, RealRow};
+#[path = "common/rounds.rs"]
+mod rounds;
+use rounds::*;
+// This round has no site: the shared site code goes unused here.
+#[allow(dead_code)]
+#[path = "common/site_rounds.rs"]
+mod site_rounds;
+use site_rounds::*;
+#[path = "common/preset_rounds.rs"]
+mod preset_rounds;
+use preset_rounds::*;
+#[path = "common/family_sets.rs"]
+mod family_sets;
+use family_sets::*;
+#[path = "common/seeds.rs"]
+mod seeds;
+
+/// Fixed in docs/seeds.md ("issue 18, ninth round") before any run.
+const FAMILY_DEV: &[u64] = &[1, 2, 3, 4, 5, 6];
+const FAMILY_TEST: &[u64] = &[381, 382, 383, 384, 385];
+/// The eighth round's preset, which every candidate scales.
+const BASE: &str = "indoor_columns";
+/// The seventh round's outdoor preset, on which the outdoor target is read.
+const OUTDOOR_NEAR: &str = "outdoor_near";
+const FILES: RoundFiles = RoundFiles {
+    dev: "scaled-dev.json",
+    report: "scaled.json",
+    md: "scaled.md",
+};
+
+/// A candidate: a name, and its parameters made from [`BASE`]'s (the
+/// descriptors are [`BASE`]'s: weights and scale change no descriptor).
+struct Candidate {
+    name: &'static str,
+    params: fn() -> DescriptorParams,
+}
+
+/// `indoor_columns`' parts, every term at weight 1, each scaled by its median.
+fn equal_shares() -> DescriptorParams {
+    let mut p = DescriptorParams::indoor_columns();
+    p.preset = "median, equal shares".into();
+    p.ndt_weight = 1.0;
+    for part in &mut p.parts {
+        part.weight = 1.0;
+    }
+    p.scale = Scale::Median;
+    p
+}
+
+/// `indoor_columns`' weights times each term's median on the office and
+/// school floors' own sensors (development seeds 1-6, `--medians`, the mean
+/// of the two floors), over Delta's: each term keeps the share of a
+/// typical distance it has there, with every sensor.
+fn floor_shares() -> DescriptorParams {
+    let mut p = DescriptorParams::indoor_columns();
+    p.preset = "median, floors' shares".into();
+    let share = |k: PartKind| match k {
+        PartKind::Slice => 0.586,
+        PartKind::Esf => 0.172,
+        PartKind::Ring => 0.127,
+        PartKind::Clutter => 1.523,
+        PartKind::Columns => 1.973,
+        _ => 0.0,
+    };
+    p.ndt_weight = 1.0;
+    for part in &mut p.parts {
+        part.weight = share(part.kind);
+    }
+    p.scale = Scale::Median;
+    p
+}
+
+const CANDIDATES: &[Candidate] = &[
+    Candidate {
+        name: "median, equal shares",
+        params: equal_shares,
+    },
+    Candidate {
+        name: "median, floors' shares",
+        params: floor_shares,
+    },
+];
+
+type RoundPart = site_rounds::Part<FamilySet, ()>;
+
+#[derive(Serialize, Deserialize)]
+struct Report {
+    presets: Vec<(String, Vec<String>)>,
+    dev: RoundPart,
+    test: RoundPart,
+    #[serde(default)]
+    real: Vec<RealRow>,
+}
+
+/// Each family's presets of rounds 2-3, `indoor_columns`, the outdoor
+/// family's `outdoor_near`, then the candidates; the hospital floors with
+/// the paper's, `indoor_clutter`, `indoor_columns` and the candidates.
+fn round_presets(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
+    let mut presets = presets_of(docs)?;
+    presets.push((
+        hospital_family().name.to_string(),
+        vec!["indoor".into(), "indoor_clutter".into()],
+    ));
+    for (family, names) in &mut presets {
+        if family == "outdoor" {
+            names.push(OUTDOOR_NEAR.into());
+        }
+        if !names.iter().any(|n| n == BASE) {
+            names.push(BASE.into());
+        }
+        names.extend(CANDIDATES.iter().map(|c| c.name.to_string()));
+    }
+    Ok(presets)
+}
+
+/// The presets to describe with: `names` but the candidates.
+fn described(names: &[String]) -> Vec<String> {
+    names
+        .iter()
+        .filter(|n| !CANDIDATES.iter().any(|c| c.name == n.as_str()))
+        .cloned()
+        .collect()
+}
+
+fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
+    let set = describe_set(f, sensor, seed, &described(presets))?;
+    let mut out = vec![];
+    let mut measured = |name: &str, p: &DescriptorParams, ds: &[placecat::Descriptor]| -> Res<()> {
+        let (figures, _, m, _) = measure(ds, p, &set.truth, set.kinds)?;
+        out.push((
+            name.to_string(),
+            figures,
+            room_level_nn(&m, &set.truth, &set.apart),
+        ));
+        Ok(())
+    };
+    for (name, p, ds) in &set.presets {
+        measured(name, p, ds)?;
+    }
+    let base = set.presets.iter().find(|p| p.0 == BASE);
+    for c in CANDIDATES
+        .iter()
+        .filter(|c| presets.iter().any(|p| p == c.name))
+    {
+        let (_, _, ds) = base.ok_or_else(|| format!("{} did not describe {}", BASE, f.name))?;
+        measured(c.name, &(c.params)(), ds)?;
+    }
+    Ok(FamilySet {
+        family: f.name.into(),
+        sensor: sensor.name(),
+        seed,
+        scans: set.scans,
+        presets: out,
+    })
+}
+
+/// Every family, the hospital floors after them.
+fn all_families() -> Vec<Family> {
+    let mut f = families();
+    f.push(hospital_family());
+    f
+}
+
+/// Each term's median over the pairs of `indoor_columns`' descriptors of
+/// every room family and sensor on the development seeds (mean over the
+/// seeds): what `Scale::Median` divides by.
+fn medians() -> Res<()> {
+    let blocked = seeds::test_seeds()?;
+    if let Some(s) = FAMILY_DEV.iter().find(|s| blocked.contains(s)) {
+        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
+    }
+    let mut unit = DescriptorParams::indoor_columns();
+    for part in &mut unit.parts {
+        part.weight = 1.0;
+    }
+    unit.scale = Scale::Median;
+    let kinds: Vec<PartKind> = unit.parts.iter().map(|p: &Part| p.kind).collect();
+    println!("family | sensor | ndt | {kinds:?}");
+    for f in all_families() {
+        if target(f.name) != target("rooms") {
+            continue;
+        }
+        for sensor in std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()) {
+            let mut sums = vec![0f64; 1 + kinds.len()];
+            for &seed in FAMILY_DEV {
+                let set = describe_set(&f, sensor, seed, &[BASE.to_string()])?;
+                let w = resolve(&set.presets[0].2, DistanceOptions::from(&unit))?;
+                sums[0] += 1.0 / w.ndt_weight as f64;
+                for (s, k) in sums[1..].iter_mut().zip(&kinds) {
+                    *s += 1.0 / w.part_weights[k.index()] as f64;
+                }
+            }
+            let n = FAMILY_DEV.len() as f64;
+            let cells: Vec<String> = sums.iter().map(|s| format!("{:.4}", s / n)).collect();
+            println!("{} | {} | {}", f.name, sensor.name(), cells.join(" | "));
+        }
+    }
+    Ok(())
+}
+
+/// What the round showed, written after its one test run.
+const NOTES: &str = "Not yet run on the test seeds.";
+
+fn render(r: &Report) -> Res<String> {
+    let mut o = String::new();
+    writeln!(
+        o,
+        "# Each term sized by its median: the scaled distance (issue 18, ninth round)\n"
+    )?;
+    writeln!(o, "Regenerate with `cargo run --release --example scaled -- --dev` (`{}`, {:.0} s) then `cargo run --release --example scaled` (test seeds, this file and `{}`, {:.0} s; it refuses to run again once `{}` exists; `-- --render` renders this file from it).\n", FILES.dev, r.dev.seconds, FILES.report, r.test.seconds, FILES.report)?;
+    writeln!(o, "## What it shows\n\n{NOTES}\n")?;
+    writeln!(o, "## 1. Test seeds 381-385, each family's own sensor\n")?;
+    family_table(&mut o, &r.presets, &r.test.families, |s| s == "own")?;
+    writeln!(o, "\n## 2. Test seeds 381-385, the other sensors\n")?;
+    family_table(&mut o, &r.presets, &r.test.families, |s| s != "own")?;
+    writeln!(
+        o,
+        "\n## 3. Real scans: same-place retrieval (every preset of the round)\n"
+    )?;
+    real_table(&mut o, &r.real)?;
+    writeln!(
+        o,
+        "\n## 4. Development seeds 1-6, every sensor (looked at before the test run)\n"
+    )?;
+    family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
+    Ok(o)
+}
+
+/// Every family and the hospital floors on `seeds`.
+fn run_families(presets: &[(String, Vec<String>)], seeds: &[u64], what: &str) -> Res<RoundPart> {
+    let (families, seconds) = every_set_of(all_families(), presets, seeds, what, family_set)?;
+    Ok(RoundPart {
+        families,
+        seconds,
+        ..RoundPart::default()
+    })
+}
+
+fn main() -> Res<()> {
+    if std::env::args().any(|a| a == "--medians") {
+        return medians();
+    }
+    let blocked = seeds::test_seeds()?;
+    if let Some(s) = FAMILY_DEV.iter().find(|s| blocked.contains(s)) {
+        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
+    }
+    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let presets = round_presets(&docs)?;
+    round_main(
+        &FILES,
+        || {
+            Ok(Report {
+                presets: presets.clone(),
+                dev: run_families(&presets, FAMILY_DEV, "dev")?,
+                test: RoundPart::default(),
+                real: vec![],
+            })
+        },
+        |r| {
+            let mut o = String::new();
+            family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
+            Ok(o)
+        },
+        |dev| {
+            let test = run_families(&presets, FAMILY_TEST, "test")?;
+            let described: Vec<(String, Vec<String>)> = presets
+                .iter()
+                .map(|(f, n)| (f.clone(), described(n)))
+                .collect();
+            Ok(Report {
+                presets: presets.clone(),
+                dev: dev.dev,
+                test,
+                real: real_rows(&described)?,
+            })
+        },
+        render,
+    )
+}
