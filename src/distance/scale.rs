@@ -13,9 +13,9 @@
 //! then the term's share of a typical distance, whatever the sensor.
 //!
 //! The medians are taken once, when a [`Space`](super::Space) is made, and
-//! the weights they give are kept with it ([`Space::options`](super::Space)),
+//! the weights they give are kept with it ([`Space::options`](super::Space::options)),
 //! so a model built from the space classifies new scans with the same
-//! weights ([`LabelledModel`](crate::LabelledModel)).
+//! weights ([`LabelledModel`](crate::model::LabelledModel)).
 
 use super::{delta_prepared, prepare_all, DistanceOptions};
 use crate::descriptor::parts::{cumulative_len, parts_distance, MAX_PARTS};
