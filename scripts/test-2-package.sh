@@ -112,8 +112,18 @@ const scans = ['pcl_room/room_scan1.pcd', 'pcl_room/room_scan2.pcd', 'velodyne_p
 for (const s of scans) set.add(s);
 same('Summary', scans[0].summary());
 same('DescriptorParams', pc.presetParams('outdoor'));
-// free_space (NDT weight 0, parts) holds the optional keys too: all declared.
-assert.deepEqual(Object.keys(pc.presetParams('free_space')).sort(), declared('DescriptorParams', true), 'free_space params');
+// Parameters come back Required<DescriptorParams>: every declared key, also
+// those the core's JSON leaves out at their defaults (ndt_weight, parts,
+// scale), for the paper's presets as for free_space and a median-scaled set.
+const allKeys = declared('DescriptorParams', true);
+assert.deepEqual(Object.keys(pc.presetParams('indoor')).sort(), allKeys, 'indoor params');
+assert.deepEqual(Object.keys(pc.presetParams('free_space')).sort(), allKeys, 'free_space params');
+assert.deepEqual([pc.presetParams('indoor').ndt_weight, pc.presetParams('indoor').parts, pc.presetParams('indoor').scale], [1, [], 'fixed'], 'the defaults the core leaves out');
+const medianSet = new pc.DescriptorSet({ scale: 'median' }, 'free_space');
+assert.deepEqual(Object.keys(medianSet.params()).sort(), allKeys, 'free_space params scaled by medians');
+assert.equal(medianSet.params().scale, 'median');
+assert.deepEqual(pc.validateParams(pc.presetParams('indoor_columns'), 'indoor'), pc.presetParams('indoor_columns'), 'params round-trip through validateParams');
+medianSet.free();
 same('DescriptorParams', set.params());
 same('KMeansResult', set.kmeans(2, 'stride', 0));
 const tree = set.hkmeans(0);
@@ -161,7 +171,10 @@ assert.deepEqual(office.pose().position, [10, 2, 0.5]);
 assert.equal(scans[0].pose(), null, 'a file has no pose');
 // The hand-written literal types name only values the API takes.
 const literals = (name) => dts.match(new RegExp(`export type ${name} = ([^;]*);`))[1].split('|').map((x) => JSON.parse(x.trim()));
-for (const p of literals('Preset')) assert.equal(pc.presetParams(p).preset, p);
+for (const p of literals('Preset')) {
+  assert.equal(pc.presetParams(p).preset, p);
+  assert.deepEqual(Object.keys(pc.presetParams(p)).sort(), allKeys, `${p}: every declared key`);
+}
 assert.deepEqual(literals('Preset'), pc.presetNotes().map((n) => n.name), 'the Preset type names every preset, in the core\'s order');
 for (const s of literals('Seeding')) assert.equal(set.kmeans(2, s, 0).labels.length, 3, s);
 console.log('the .d.ts interfaces match the objects returned');

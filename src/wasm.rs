@@ -46,6 +46,24 @@ fn to_js<T: Serialize + ?Sized>(v: &T) -> WasmResult<JsValue> {
     Ok(v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())?)
 }
 
+/// Parameters as the plain object the .d.ts promises
+/// (`Required<DescriptorParams>`): every key, those the core's JSON leaves
+/// out at their defaults (`ndt_weight` 1, no `parts`, `scale` fixed; left
+/// out so that older descriptor and model files keep their bytes) included.
+fn params_to_js(params: &DescriptorParams) -> WasmResult<JsValue> {
+    let mut json = serde_json::to_value(params).map_err(Error::from)?;
+    if let Some(object) = json.as_object_mut() {
+        object
+            .entry("ndt_weight")
+            .or_insert(params.ndt_weight.into());
+        object.entry("parts").or_insert(serde_json::json!([]));
+        object
+            .entry("scale")
+            .or_insert(serde_json::to_value(params.scale).map_err(Error::from)?);
+    }
+    to_js(&json)
+}
+
 /// A JS value as JSON; `undefined` and `null` as `None`.
 fn json_of(v: JsValue) -> WasmResult<Option<serde_json::Value>> {
     Ok(serde_wasm_bindgen::from_value(v)?)
@@ -143,7 +161,7 @@ pub fn version() -> String {
 pub fn preset_params(
     #[wasm_bindgen(unchecked_param_type = "Preset")] name: &str,
 ) -> WasmResult<JsValue> {
-    to_js(&DescriptorParams::preset(name)?)
+    params_to_js(&DescriptorParams::preset(name)?)
 }
 
 /// Every preset with its one-line explanation, in the order of the menu.
@@ -165,7 +183,7 @@ pub fn validate_params(
     params: JsValue,
     preset: Option<String>,
 ) -> WasmResult<JsValue> {
-    to_js(&params_from_js(params, preset)?)
+    params_to_js(&params_from_js(params, preset)?)
 }
 
 /// Parse a poses file (KITTI, TUM or CSV): `{format, poses: [{name, time, position, yaw}]}`.

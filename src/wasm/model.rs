@@ -86,7 +86,7 @@ impl Model {
     /// The model's descriptor parameters (describe new scans with these).
     #[wasm_bindgen(unchecked_return_type = "Required<DescriptorParams>")]
     pub fn params(&self) -> WasmResult<JsValue> {
-        to_js(&self.model.params)
+        params_to_js(&self.model.params)
     }
     /// Classify a described scan: `{name, label, distance, relative}`
     /// (`relative` = distance / the category's radius; > 1: farther than

@@ -40,7 +40,7 @@ impl DescriptorSet {
     /// The parameters, as a plain object.
     #[wasm_bindgen(unchecked_return_type = "Required<DescriptorParams>")]
     pub fn params(&self) -> WasmResult<JsValue> {
-        to_js(self.set.params())
+        params_to_js(self.set.params())
     }
     /// Delta between items i and j.
     pub fn delta(&mut self, i: usize, j: usize) -> WasmResult<f32> {
