@@ -199,5 +199,7 @@ def scans(
     every: int = 1,
     every_metres: Optional[float] = None,
     max_points: Optional[int] = None,
+    name: Optional[str] = None,
 ) -> Scans:
-    """The scans of a ROS bag (.bag, .mcap) or an E57 survey, one at a time."""
+    """The scans of a ROS bag (.bag, .mcap) or an E57 survey, one at a time;
+    ``name`` replaces the file's base name at the start of the scans' names."""

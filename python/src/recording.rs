@@ -27,6 +27,9 @@ use std::path::PathBuf;
 pub struct PyScans {
     source: Recording,
     errors: Vec<String>,
+    /// The file's base name and what replaces it at the start of each
+    /// scan's name (`scans(..., name=)`), or None.
+    rename: Option<(String, String)>,
 }
 
 #[pymethods]
@@ -39,7 +42,14 @@ impl PyScans {
         loop {
             match self.source.next() {
                 None => return Ok(None),
-                Some(Ok(scan)) => return scan_dict(py, scan).map(Some),
+                Some(Ok(mut scan)) => {
+                    if let Some((base, name)) = &self.rename {
+                        if let Some(rest) = scan.name.strip_prefix(base.as_str()) {
+                            scan.name = format!("{name}{rest}");
+                        }
+                    }
+                    return scan_dict(py, scan).map(Some);
+                }
                 Some(Err(e)) => {
                     // Listed first: a warning turned into an error (-W error) raises here.
                     let message = e.to_string();
@@ -107,16 +117,20 @@ fn scan_dict(py: Python<'_>, scan: RecordedScan) -> PyResult<Bound<'_, PyDict>> 
 /// only one; `every` keeps every Nth cloud, `every_metres` one cloud so
 /// many metres along the recorded path, as the CLI's `--topic`, `--every`
 /// and `--every-metres`) or an E57 survey (every station; the bag keywords
-/// do not apply). `max_points` caps each scan. Raises PlacecatError naming
-/// the file when it cannot be opened.
+/// do not apply). `max_points` caps each scan. `name` replaces the file's
+/// base name at the start of the scans' names (e.g. the recording's path
+/// under a fleet's folder, as the CLI's describe names a bag's clouds), so
+/// that recordings of one name in different folders keep apart. Raises
+/// PlacecatError naming the file when it cannot be opened.
 #[pyfunction]
-#[pyo3(signature = (path, *, topic=None, every=1, every_metres=None, max_points=None))]
+#[pyo3(signature = (path, *, topic=None, every=1, every_metres=None, max_points=None, name=None))]
 pub fn scans(
     path: PathBuf,
     topic: Option<String>,
     every: usize,
     every_metres: Option<f64>,
     max_points: Option<usize>,
+    name: Option<String>,
 ) -> PyResult<PyScans> {
     let mut limits = ReadLimits::default();
     if let Some(m) = max_points {
@@ -130,9 +144,16 @@ pub fn scans(
         ..Default::default()
     };
     let source = Recording::open_path(&path, opts).map_err(core_err)?;
+    // The reader names scans after the file's base name (as the CLI's
+    // describe finds it to rename a bag's clouds).
+    let base = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
     Ok(PyScans {
         source,
         errors: Vec::new(),
+        rename: name.map(|n| (base, n)),
     })
 }
 

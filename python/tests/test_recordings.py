@@ -55,6 +55,23 @@ def test_a_bag_gives_its_clouds_with_their_odometry_thinned_as_the_cli_thins():
     assert d.summary["points"] == 2700
 
 
+def test_name_keeps_recordings_of_one_name_in_different_folders_apart(tmp_path):
+    # Two runs saved as run.bag in their own folders: by base name their
+    # clouds would share names; named by their paths under the fleet's
+    # folder (as the CLI's describe names them), they do not.
+    data = (BAGS / "ros1_corridor.bag").read_bytes()
+    names = []
+    for day in ("monday", "tuesday"):
+        (tmp_path / day).mkdir()
+        (tmp_path / day / "run.bag").write_bytes(data)
+        names += [c["name"] for c in placecat.scans(tmp_path / day / "run.bag", name=f"{day}/run.bag")]
+    assert names == [f"{d}/run.bag:/points:00000{i}" for d in ("monday", "tuesday") for i in (0, 1)]
+    assert [c["name"] for c in placecat.scans(tmp_path / "monday" / "run.bag")] == ["run.bag:/points:000000", "run.bag:/points:000001"]
+    # A survey's stations the same way.
+    stations = [s["name"] for s in placecat.scans(SURVEY / "survey.e57", name="site/a.e57")]
+    assert stations[0] == "site/a.e57:hall"
+
+
 def test_a_cloud_that_cannot_be_read_is_skipped_with_a_warning_and_listed():
     scans = placecat.scans(BAGS / "bad_no_xyz.bag")
     with pytest.warns(UserWarning, match=r"cloud 2 .*no field \"x\""):
