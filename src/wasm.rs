@@ -50,18 +50,22 @@ fn to_js<T: Serialize + ?Sized>(v: &T) -> WasmResult<JsValue> {
 /// (`Required<DescriptorParams>`): every key, those the core's JSON leaves
 /// out at their defaults (`ndt_weight` 1, no `parts`, `scale` fixed; left
 /// out so that older descriptor and model files keep their bytes) included.
+/// They are the struct's last fields, so setting them where missing keeps
+/// the struct's order (the page shows the object as JSON, `preset` first).
 fn params_to_js(params: &DescriptorParams) -> WasmResult<JsValue> {
-    let mut json = serde_json::to_value(params).map_err(Error::from)?;
-    if let Some(object) = json.as_object_mut() {
-        object
-            .entry("ndt_weight")
-            .or_insert(params.ndt_weight.into());
-        object.entry("parts").or_insert(serde_json::json!([]));
-        object
-            .entry("scale")
-            .or_insert(serde_json::to_value(params.scale).map_err(Error::from)?);
+    let object = to_js(params)?;
+    let not_an_object = |_| JsError::new("parameters: not a plain object");
+    for (key, value) in [
+        ("ndt_weight", to_js(&params.ndt_weight)?),
+        ("parts", to_js(&params.parts)?),
+        ("scale", to_js(&params.scale)?),
+    ] {
+        let key = JsValue::from_str(key);
+        if !js_sys::Reflect::has(&object, &key).map_err(not_an_object)? {
+            js_sys::Reflect::set(&object, &key, &value).map_err(not_an_object)?;
+        }
     }
-    to_js(&json)
+    Ok(object)
 }
 
 /// A JS value as JSON; `undefined` and `null` as `None`.
