@@ -44,8 +44,12 @@ impl PyScans {
                 None => return Ok(None),
                 Some(Ok(mut scan)) => {
                     if let Some((base, name)) = &self.rename {
-                        if let Some(rest) = scan.name.strip_prefix(base.as_str()) {
-                            scan.name = format!("{name}{rest}");
+                        // The scan's and its pose's name, which the readers make alike.
+                        let pose_name = scan.pose.as_mut().and_then(|p| p.name.as_mut());
+                        for n in std::iter::once(&mut scan.name).chain(pose_name) {
+                            if let Some(rest) = n.strip_prefix(base.as_str()) {
+                                *n = format!("{name}{rest}");
+                            }
                         }
                     }
                     return scan_dict(py, scan).map(Some);

@@ -64,12 +64,15 @@ def test_name_keeps_recordings_of_one_name_in_different_folders_apart(tmp_path):
     for day in ("monday", "tuesday"):
         (tmp_path / day).mkdir()
         (tmp_path / day / "run.bag").write_bytes(data)
-        names += [c["name"] for c in placecat.scans(tmp_path / day / "run.bag", name=f"{day}/run.bag")]
+        clouds = list(placecat.scans(tmp_path / day / "run.bag", name=f"{day}/run.bag"))
+        assert [c["pose"]["name"] for c in clouds] == [c["name"] for c in clouds]
+        names += [c["name"] for c in clouds]
     assert names == [f"{d}/run.bag:/points:00000{i}" for d in ("monday", "tuesday") for i in (0, 1)]
     assert [c["name"] for c in placecat.scans(tmp_path / "monday" / "run.bag")] == ["run.bag:/points:000000", "run.bag:/points:000001"]
     # A survey's stations the same way.
-    stations = [s["name"] for s in placecat.scans(SURVEY / "survey.e57", name="site/a.e57")]
-    assert stations[0] == "site/a.e57:hall"
+    stations = list(placecat.scans(SURVEY / "survey.e57", name="site/a.e57"))
+    assert [s["name"] for s in stations][:2] == ["site/a.e57:hall", "site/a.e57:office"]
+    assert stations[1]["pose"]["name"] == "site/a.e57:office"
 
 
 def test_a_cloud_that_cannot_be_read_is_skipped_with_a_warning_and_listed():
