@@ -27,9 +27,6 @@ use std::path::PathBuf;
 pub struct PyScans {
     source: Recording,
     errors: Vec<String>,
-    /// The file's base name and what replaces it at the start of each
-    /// scan's name (`scans(..., name=)`), or None.
-    rename: Option<(String, String)>,
 }
 
 #[pymethods]
@@ -42,18 +39,7 @@ impl PyScans {
         loop {
             match self.source.next() {
                 None => return Ok(None),
-                Some(Ok(mut scan)) => {
-                    if let Some((base, name)) = &self.rename {
-                        // The scan's and its pose's name, which the readers make alike.
-                        let pose_name = scan.pose.as_mut().and_then(|p| p.name.as_mut());
-                        for n in std::iter::once(&mut scan.name).chain(pose_name) {
-                            if let Some(rest) = n.strip_prefix(base.as_str()) {
-                                *n = format!("{name}{rest}");
-                            }
-                        }
-                    }
-                    return scan_dict(py, scan).map(Some);
-                }
+                Some(Ok(scan)) => return scan_dict(py, scan).map(Some),
                 Some(Err(e)) => {
                     // Listed first: a warning turned into an error (-W error) raises here.
                     let message = e.to_string();
@@ -122,9 +108,10 @@ fn scan_dict(py: Python<'_>, scan: RecordedScan) -> PyResult<Bound<'_, PyDict>> 
 /// many metres along the recorded path, as the CLI's `--topic`, `--every`
 /// and `--every-metres`) or an E57 survey (every station; the bag keywords
 /// do not apply). `max_points` caps each scan. `name` replaces the file's
-/// base name at the start of the scans' names (e.g. the recording's path
-/// under a fleet's folder, as the CLI's describe names a bag's clouds), so
-/// that recordings of one name in different folders keep apart. Raises
+/// base name at the start of the scans' names, their poses' and the
+/// skipped scans' (e.g. the recording's path under a fleet's folder, as the
+/// CLI's describe names a bag's clouds), so that recordings of one name in
+/// different folders keep apart. Raises
 /// PlacecatError naming the file when it cannot be opened.
 #[pyfunction]
 #[pyo3(signature = (path, *, topic=None, every=1, every_metres=None, max_points=None, name=None))]
@@ -147,17 +134,10 @@ pub fn scans(
         limits,
         ..Default::default()
     };
-    let source = Recording::open_path(&path, opts).map_err(core_err)?;
-    // The reader names scans after the file's base name (as the CLI's
-    // describe finds it to rename a bag's clouds).
-    let base = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
+    let source = Recording::open_path_as(&path, name.as_deref(), opts).map_err(core_err)?;
     Ok(PyScans {
         source,
         errors: Vec::new(),
-        rename: name.map(|n| (base, n)),
     })
 }
 

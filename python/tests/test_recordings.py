@@ -73,6 +73,11 @@ def test_name_keeps_recordings_of_one_name_in_different_folders_apart(tmp_path):
     stations = list(placecat.scans(SURVEY / "survey.e57", name="site/a.e57"))
     assert [s["name"] for s in stations][:2] == ["site/a.e57:hall", "site/a.e57:office"]
     assert stations[1]["pose"]["name"] == "site/a.e57:office"
+    # A skipped cloud is labelled by the name too; the message names the file.
+    bad = placecat.scans(BAGS / "bad_no_xyz.bag", name="tuesday/bad.bag")
+    with pytest.warns(UserWarning):
+        list(bad)
+    assert "(tuesday/bad.bag:" in bad.errors[0] and "bad_no_xyz.bag" in bad.errors[0]
 
 
 def test_a_cloud_that_cannot_be_read_is_skipped_with_a_warning_and_listed():

@@ -45,6 +45,18 @@ impl Recording {
     /// after the file's base name, a bag's clouds `run.bag:/points:000042`
     /// and a survey's stations `site.e57:hall`.
     pub fn open_path(path: &std::path::Path, opts: super::bag::BagOptions) -> Result<Self> {
+        Self::open_path_as(path, None, opts)
+    }
+
+    /// [`open_path`](Self::open_path), the scans (and their poses) named
+    /// after `prefix` in place of the file's base name when it is given,
+    /// e.g. the recording's path under a folder, so that recordings of one
+    /// name in different folders keep apart; errors still name the path.
+    pub fn open_path_as(
+        path: &std::path::Path,
+        prefix: Option<&str>,
+        opts: super::bag::BagOptions,
+    ) -> Result<Self> {
         use std::io::{Read, Seek};
         let name = path.display().to_string();
         let in_file = |e: std::io::Error| Error::from(e).in_file(&name);
@@ -63,13 +75,16 @@ impl Recording {
             // The sniff moved the file on; the survey's header is read from byte 0.
             file.rewind().map_err(in_file)?;
             let reader = std::io::BufReader::with_capacity(1 << 20, file);
-            let base = super::base_name(&name);
-            let scans = super::e57::SurveyScans::open_as(reader, &name, base, opts.limits)?;
+            let prefix = prefix.unwrap_or_else(|| super::base_name(&name));
+            let scans = super::e57::SurveyScans::open_as(reader, &name, prefix, opts.limits)?;
             return Ok(Recording::Survey(Box::new(scans)));
         }
         // A .db3 too: opening refuses it with the core's message.
         if super::bag::is_bag_name(&name) {
-            let reader = super::bag::BagReader::open_path(path, opts)?;
+            let mut reader = super::bag::BagReader::open_path(path, opts)?;
+            if let Some(prefix) = prefix {
+                reader = reader.with_prefix(prefix);
+            }
             return Ok(Recording::Bag(Box::new(reader)));
         }
         if name.to_ascii_lowercase().ends_with(".e57") {

@@ -236,6 +236,14 @@ impl<S: ByteSource + 'static> BagReader<S> {
         self.count
     }
 
+    /// Name the clouds (and their poses, and the clouds in errors) after
+    /// `prefix`, e.g. the bag's path under a folder, in place of the bag's
+    /// base name; errors still name the file.
+    pub fn with_prefix(mut self, prefix: &str) -> Self {
+        self.bag_name = prefix.to_string();
+        self
+    }
+
     /// Clouds of the topic met so far, kept or not (for progress).
     pub fn clouds_met(&self) -> u64 {
         self.index as u64
