@@ -13,9 +13,9 @@ pub fn test_seeds() -> Result<Vec<u64>, Box<dyn std::error::Error>> {
         if cells.len() < 4 || cells[1].starts_with("clustering") || cells[1] == "work" {
             continue;
         }
-        // Dates ("Run once on 2026-12-01") and file names
-        // ("docs/descriptors-2.md") are not seeds.
-        let cell = strip_dates(&strip_paths(cells[3]));
+        // Dates ("Run once on 2026-12-01"), times ("at 01:02") and file
+        // names ("docs/descriptors-2.md") are not seeds.
+        let cell = strip_times(&strip_dates(&strip_paths(cells[3])));
         let words: Vec<&str> = cell
             .split(|c: char| !c.is_ascii_alphanumeric())
             .filter(|w| !w.is_empty())
@@ -81,4 +81,60 @@ fn strip_dates(text: &str) -> String {
         }
     }
     out.into_iter().collect()
+}
+
+/// `text` with every clock time (HH:MM, HH:MM:SS) blanked out: a digit pair
+/// joined to another by a colon is a time, never a seed, which the table
+/// writes as "301, 302".
+fn strip_times(text: &str) -> String {
+    let mut out: Vec<char> = text.chars().collect();
+    let n = out.len();
+    let digit = |v: &Vec<char>, i: usize| v.get(i).is_some_and(char::is_ascii_digit);
+    let mut blank = vec![false; n];
+    for i in 0..n {
+        if out[i] != ':' || i == 0 || !digit(&out, i - 1) || !digit(&out, i + 1) {
+            continue;
+        }
+        let mut a = i;
+        while a > 0 && digit(&out, a - 1) {
+            a -= 1;
+        }
+        let mut b = i + 1;
+        while digit(&out, b) {
+            b += 1;
+        }
+        blank[a..b].iter_mut().for_each(|x| *x = true);
+    }
+    for (c, &x) in out.iter_mut().zip(&blank) {
+        if x {
+            *c = ' ';
+        }
+    }
+    out.into_iter().collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn times_and_dates_are_not_seeds() {
+        let cell = strip_times(&strip_dates("381, 382 (run at 01:02:33 on 2026-12-02)"));
+        let numbers: Vec<&str> = cell
+            .split(|c: char| !c.is_ascii_digit())
+            .filter(|w| !w.is_empty())
+            .collect();
+        assert_eq!(numbers, ["381", "382"]);
+    }
+
+    #[test]
+    fn every_test_seed_of_the_table_and_no_development_seed() {
+        let seeds = test_seeds().unwrap();
+        for s in [11, 20, 101, 305, 381, 385, 805] {
+            assert!(seeds.contains(&s), "{s}");
+        }
+        for s in 0..=10 {
+            assert!(!seeds.contains(&s), "{s} is a development seed");
+        }
+    }
 }
