@@ -105,17 +105,36 @@ pub fn room_level_nn(m: &DistanceMatrix, truth: &[String], apart: &Apart) -> f64
     hits as f64 / m.n as f64
 }
 
+#[allow(dead_code)] // the tenth round (floor.rs) calls describe_set_with alone
 pub fn describe_set(
     f: &Family,
     sensor: Sensor,
     seed: u64,
     presets: &[String],
 ) -> Res<DescribedSet> {
+    describe_set_with(f, sensor, seed, presets, |_| Ok(vec![]))
+}
+
+/// [`describe_set`], then each of the parameters `extra` makes from the
+/// simulation (named as it names them; round 10: a floor found from the
+/// set's scans).
+pub fn describe_set_with(
+    f: &Family,
+    sensor: Sensor,
+    seed: u64,
+    presets: &[String],
+    extra: impl FnOnce(&Simulation) -> Res<Vec<(String, DescriptorParams)>>,
+) -> Res<DescribedSet> {
     let sim = Simulation::new(&sim_params(f, sensor, seed)?)?;
-    let params: Vec<DescriptorParams> = presets
+    let mut params: Vec<DescriptorParams> = presets
         .iter()
         .map(|p| DescriptorParams::preset(p))
         .collect::<placecat::Result<_>>()?;
+    let extra = extra(&sim)?;
+    let names: Vec<String> = (presets.iter().cloned())
+        .chain(extra.iter().map(|e| e.0.clone()))
+        .collect();
+    params.extend(extra.into_iter().map(|e| e.1));
     // Each scan has its own RNG stream, so describing in parallel changes
     // no figure.
     let per_scan: Vec<Vec<placecat::Result<Descriptor>>> = (0..sim.len())
@@ -136,7 +155,7 @@ pub fn describe_set(
             .map(|s| s[j].as_ref().ok().cloned())
             .collect();
         if let Some(ds) = ds {
-            described.push((presets[j].clone(), p, ds));
+            described.push((names[j].clone(), p, ds));
         }
     }
     let apart = if f.scene == SceneKind::Warehouse || f.scene == SceneKind::Outdoor {

@@ -99,7 +99,8 @@ pub(super) fn floor_and_ceiling_of(scan: &PolarScan) -> Option<(f32, f32)> {
         let k = ((z.len() - 1) as f64 * q).round() as usize;
         *z.select_nth_unstable_by(k, f32::total_cmp).1
     };
-    Some((at(0.02), at(0.98)))
+    let ceiling = at(0.98);
+    Some((scan.known_floor().unwrap_or_else(|| at(0.02)), ceiling))
 }
 
 /// Each sector's nearest return in the band at `level` above the floor,
@@ -245,6 +246,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::descriptor::parts::{describe_parts, parts_distance, PartKind};
 
     /// Points on the walls, floor and ceiling of a w x d x 3 m box round
     /// the origin (floor at -1.2), every 5 cm, and a table top (0.75 m
@@ -284,6 +286,59 @@ mod tests {
         p
     }
 
+    /// The bin of the inside-height profile that holds the most mass.
+    fn profile_peak(v: &[f32]) -> usize {
+        (0..PROFILE_BINS)
+            .max_by(|&a, &b| v[a].total_cmp(&v[b]))
+            .unwrap()
+    }
+
+    /// As a sparse sensor sees a small room: no floor, and the walls only
+    /// from 0.6 m above it. The estimated floor lands on the walls' lowest
+    /// points, so the table top reads 0.15 m above it; given the sensor's
+    /// height (1.2 m), the floor is where it is and the table at 0.75 m.
+    #[test]
+    fn a_given_sensor_height_places_the_floor_the_scan_cannot_see() {
+        let floor = -1.2f32;
+        let pts: Vec<[f32; 3]> = box_room(6.0, 4.0, true)
+            .into_iter()
+            .filter(|p| p[2] > floor + 0.55)
+            .collect();
+        let estimated = PolarScan::new(&pts).floor_and_ceiling().unwrap().0;
+        assert!(
+            (estimated - (floor + 0.6)).abs() < 0.06,
+            "estimate {estimated}"
+        );
+        let given = PolarScan::with_sensor_height(&pts, Some(1.2));
+        assert_eq!(given.floor_and_ceiling().unwrap().0, floor);
+        let kinds = [PartKind::Clutter];
+        let [v] = &describe_parts(&pts, &kinds, None)[..] else {
+            panic!()
+        };
+        let [w] = &describe_parts(&pts, &kinds, Some(1.2))[..] else {
+            panic!()
+        };
+        assert!(
+            profile_peak(v) <= 2,
+            "estimate: peak at bin {}",
+            profile_peak(v)
+        );
+        assert!(
+            (7..=8).contains(&profile_peak(w)),
+            "given: peak at bin {}",
+            profile_peak(w)
+        );
+        // Where the floor is seen, the given height changes little.
+        let seen = box_room(6.0, 4.0, true);
+        let [a] = &describe_parts(&seen, &kinds, None)[..] else {
+            panic!()
+        };
+        let [b] = &describe_parts(&seen, &kinds, Some(1.2))[..] else {
+            panic!()
+        };
+        assert!(parts_distance(a, b) < 0.05, "{}", parts_distance(a, b));
+    }
+
     #[test]
     fn floor_and_ceiling_of_a_box_are_its_floor_and_ceiling() {
         let (f, c) = floor_and_ceiling(&box_room(6.0, 4.0, false)).unwrap();
@@ -316,9 +371,7 @@ mod tests {
         assert!(low.iter().all(|&s| s > 0.95), "{low:?}");
         let v = describe(&pts);
         let profile = &v[..PROFILE_BINS];
-        let peak = (0..PROFILE_BINS)
-            .max_by(|&a, &b| profile[a].total_cmp(&profile[b]))
-            .unwrap();
+        let peak = profile_peak(profile);
         assert!((7..=8).contains(&peak), "peak at bin {peak}: {profile:?}");
         assert!(v[PROFILE_BINS] < 0.9, "density still 0");
     }

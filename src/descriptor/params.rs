@@ -16,6 +16,9 @@ pub const MAX_CELLS: usize = 1_000_000;
 /// (the native and wasm voxel index then disagree, ndt_grid.rs).
 pub const MIN_VOXEL_SIZE: f64 = 1e-3;
 
+/// Highest `sensor_height` accepted (m): a mast, not a drone's altitude.
+pub const MAX_SENSOR_HEIGHT: f64 = 20.0;
+
 /// How candidate orientations are chosen (rotation invariance).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
@@ -126,6 +129,14 @@ pub struct DescriptorParams {
     /// by their median over the collection's pairs of scans.
     #[serde(default, skip_serializing_if = "Scale::is_fixed")]
     pub scale: Scale,
+    /// The sensor's height above the floor (m), a constant of the robot:
+    /// when given, the `clutter` and `columns` parts measure heights from
+    /// a floor this far below the sensor; when left out (the default, and
+    /// out of JSON), each scan's floor is estimated from its own points,
+    /// which fails where the floor is not seen (a sparse sensor in a small
+    /// room). Only those two parts read it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sensor_height: Option<f64>,
 }
 
 fn is_one(w: &f64) -> bool {
@@ -256,6 +267,7 @@ impl DescriptorParams {
             ndt_weight: 1.0,
             parts: Vec::new(),
             scale: Scale::Fixed,
+            sensor_height: None,
         }
     }
 
@@ -518,11 +530,21 @@ impl DescriptorParams {
                 "classes x height bands x ranges make {cells} cells per matrix (at most {MAX_CELLS})"
             ));
         }
+        self.validate_sensor_height()?;
         self.validate_weights()
     }
 
     /// The weights of the NDT histogram and of the parts: finite, not
     /// negative, not all zero, each kind of part at most once.
+    fn validate_sensor_height(&self) -> Result<()> {
+        match self.sensor_height {
+            Some(h) if !(h.is_finite() && h > 0.0 && h <= MAX_SENSOR_HEIGHT) => invalid(format!(
+                "sensor_height must be above 0 and at most {MAX_SENSOR_HEIGHT} m (the sensor's height above the floor), got {h}"
+            )),
+            _ => Ok(()),
+        }
+    }
+
     fn validate_weights(&self) -> Result<()> {
         if !(self.ndt_weight.is_finite() && self.ndt_weight >= 0.0) {
             return invalid(format!(

@@ -85,7 +85,9 @@ impl PartKind {
 
     /// Compute the part from a scan's points (sensor frame, z up).
     pub fn describe(self, points: &[[f32; 3]]) -> Vec<f32> {
-        describe_parts(points, &[self]).pop().unwrap_or_default()
+        describe_parts(points, &[self], None)
+            .pop()
+            .unwrap_or_default()
     }
 
     /// Compute the part from a scan whose ranges and azimuths are
@@ -110,7 +112,14 @@ impl PartKind {
 /// and azimuths ([`PolarScan`]) are computed once, and only when a part
 /// that reads them is asked for: `height_range` and `esf` alone cost no
 /// `hypot` or `atan2` pass.
-pub fn describe_parts(points: &[[f32; 3]], kinds: &[PartKind]) -> Vec<Vec<f32>> {
+///
+/// `sensor_height` (m above the floor), where given, places the floor of
+/// the parts that measure from it ([`PolarScan::with_sensor_height`]).
+pub fn describe_parts(
+    points: &[[f32; 3]],
+    kinds: &[PartKind],
+    sensor_height: Option<f32>,
+) -> Vec<Vec<f32>> {
     let scan = std::cell::OnceCell::new();
     kinds
         .iter()
@@ -119,7 +128,9 @@ pub fn describe_parts(points: &[[f32; 3]], kinds: &[PartKind]) -> Vec<Vec<f32>> 
                 PartKind::HeightRange => height_range::describe(points),
                 PartKind::Esf => esf::describe(points),
                 PartKind::M2dp => m2dp::describe(points),
-                _ => kind.describe_scan(scan.get_or_init(|| PolarScan::new(points))),
+                _ => kind.describe_scan(
+                    scan.get_or_init(|| PolarScan::with_sensor_height(points, sensor_height)),
+                ),
             };
             debug_assert_eq!(v.len(), kind.len());
             v
@@ -357,7 +368,7 @@ mod tests {
             .collect();
         let built = |kinds: &[PartKind]| {
             let before = super::super::polar::built();
-            let v = describe_parts(&pts, kinds);
+            let v = describe_parts(&pts, kinds, None);
             assert_eq!(v.len(), kinds.len());
             super::super::polar::built() - before
         };

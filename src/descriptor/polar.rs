@@ -23,6 +23,9 @@ pub struct PolarScan<'a> {
     /// The floor and ceiling heights, found once for the parts that
     /// measure from them (`clutter` and `columns`).
     floor_and_ceiling: OnceCell<Option<(f32, f32)>>,
+    /// The floor's height relative to the sensor when it is known
+    /// (`-sensor_height`), in place of the estimate.
+    known_floor: Option<f32>,
 }
 
 impl<'a> PolarScan<'a> {
@@ -39,7 +42,22 @@ impl<'a> PolarScan<'a> {
                 .collect(),
             polygon: OnceCell::new(),
             floor_and_ceiling: OnceCell::new(),
+            known_floor: None,
         }
+    }
+
+    /// [`new`](Self::new), with the floor `sensor_height` below the sensor
+    /// where it is given.
+    pub fn with_sensor_height(points: &'a [[f32; 3]], sensor_height: Option<f32>) -> Self {
+        PolarScan {
+            known_floor: sensor_height.map(|h| -h),
+            ..Self::new(points)
+        }
+    }
+
+    /// The floor's height relative to the sensor, when it is given.
+    pub fn known_floor(&self) -> Option<f32> {
+        self.known_floor
     }
 
     /// Horizontal range of point `i`.

@@ -510,3 +510,41 @@ fn hand_made_distance_weights_are_checked() {
         );
     }
 }
+
+/// `sensor_height` is the sensor's height above the floor: refused unless
+/// in (0, 20] m, out of JSON when not given (so earlier parameters files
+/// keep their bytes) and read back when given, and it moves only the
+/// parts that measure from the floor (`clutter`, `columns`): the NDT
+/// histogram and the other parts stay bit for bit the same.
+#[test]
+fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
+    for bad in [0.0, -1.0, 20.5, f64::NAN, f64::INFINITY] {
+        let p = DescriptorParams {
+            sensor_height: Some(bad),
+            ..every_part(1.0)
+        };
+        let e = p.validate().unwrap_err().to_string();
+        assert!(e.contains("sensor_height"), "{bad}: {e}");
+    }
+    let json = serde_json::to_string(&every_part(1.0)).unwrap();
+    assert!(!json.contains("sensor_height"), "{json}");
+    let given = DescriptorParams {
+        sensor_height: Some(1.05),
+        ..every_part(1.0)
+    };
+    let back: DescriptorParams =
+        serde_json::from_str(&serde_json::to_string(&given).unwrap()).unwrap();
+    assert_eq!(back, given);
+    // The office's floor lies 1.2 m below the sensor: measured from 1.05 m
+    // below it, every height reads 0.15 m higher.
+    let pts = office(7);
+    let (a, b) = (
+        describe(&pts, &every_part(1.0)).unwrap(),
+        describe(&pts, &given).unwrap(),
+    );
+    assert_eq!(a.matrices, b.matrices);
+    for (x, y) in a.parts.iter().zip(&b.parts) {
+        let floor_bound = matches!(x.kind, PartKind::Clutter | PartKind::Columns);
+        assert_eq!(x.values == y.values, !floor_bound, "{:?}", x.kind);
+    }
+}
