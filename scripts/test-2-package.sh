@@ -119,12 +119,16 @@ same('DescriptorParams', pc.presetParams('outdoor'));
 const allKeys = declared('DescriptorParams', true);
 const indoor = pc.presetParams('indoor');
 const indoorKeys = Object.keys(indoor);
-assert.deepEqual([indoor.ndt_weight, indoor.parts, indoor.scale], [1, [], 'fixed'], 'the defaults the core leaves out');
+assert.deepEqual([indoor.ndt_weight, indoor.parts, indoor.scale, indoor.sensor_height], [1, [], 'fixed', null], 'the defaults the core leaves out');
 // ... in the struct's order, as the page's parameter box shows them.
-assert.deepEqual([indoorKeys[0], ...indoorKeys.slice(-3)], ['preset', 'ndt_weight', 'parts', 'scale'], 'the struct\'s order');
+assert.deepEqual([indoorKeys[0], ...indoorKeys.slice(-4)], ['preset', 'ndt_weight', 'parts', 'scale', 'sensor_height'], 'the struct\'s order');
 const medianSet = new pc.DescriptorSet({ scale: 'median' }, 'free_space');
 assert.deepEqual(Object.keys(medianSet.params()).sort(), allKeys, 'free_space params scaled by medians');
 assert.equal(medianSet.params().scale, 'median');
+// A given sensor height comes back as given, and a bad one is an Error
+// that names the field.
+assert.equal(pc.validateParams({ sensor_height: 1.15 }, 'indoor_columns').sensor_height, 1.15);
+assert.throws(() => pc.validateParams({ sensor_height: -1 }, 'indoor_columns'), /sensor_height/);
 assert.deepEqual(pc.validateParams(pc.presetParams('indoor_columns'), 'indoor'), pc.presetParams('indoor_columns'), 'params round-trip through validateParams');
 medianSet.free();
 same('DescriptorParams', set.params());

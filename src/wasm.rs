@@ -48,7 +48,8 @@ fn to_js<T: Serialize + ?Sized>(v: &T) -> WasmResult<JsValue> {
 
 /// Parameters as the plain object the .d.ts promises
 /// (`Required<DescriptorParams>`): every key, those the core's JSON leaves
-/// out at their defaults (`ndt_weight` 1, no `parts`, `scale` fixed; left
+/// out at their defaults (`ndt_weight` 1, no `parts`, `scale` fixed,
+/// `sensor_height` null; left
 /// out so that older descriptor and model files keep their bytes) included.
 /// They are the struct's last fields, so setting them where missing keeps
 /// the struct's order (the page shows the object as JSON, `preset` first).
@@ -59,6 +60,7 @@ fn params_to_js(params: &DescriptorParams) -> WasmResult<JsValue> {
         ("ndt_weight", to_js(&params.ndt_weight)?),
         ("parts", to_js(&params.parts)?),
         ("scale", to_js(&params.scale)?),
+        ("sensor_height", to_js(&params.sensor_height)?),
     ] {
         let key = JsValue::from_str(key);
         if !js_sys::Reflect::has(&object, &key).map_err(not_an_object)? {

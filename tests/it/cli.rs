@@ -254,6 +254,45 @@ fn describe_with_params_file_and_all_failing_exits_nonzero() {
     );
 }
 
+/// `--sensor-height` sets the parameters' `sensor_height` (over a
+/// `--params` file's) and is checked as they are, naming the field.
+#[test]
+fn describe_takes_the_sensor_height() {
+    let dir = tmp("sensor_height");
+    std::fs::write(
+        dir.join("s.ply"),
+        write::ply(&office(3), PlyEncoding::BinaryBigEndian, true),
+    )
+    .unwrap();
+    std::fs::write(dir.join("p.json"), r#"{"sensor_height": 2.0}"#).unwrap();
+    succeeds(
+        placecat()
+            .args([
+                "describe",
+                "--preset",
+                "indoor_columns",
+                "--sensor-height",
+                "1.15",
+                "--params",
+            ])
+            .arg(dir.join("p.json"))
+            .arg(dir.join("s.ply"))
+            .arg("-o")
+            .arg(dir.join("d.json")),
+    );
+    let v = read_json(&dir.join("d.json"));
+    assert_eq!(v["params"]["sensor_height"], 1.15);
+    assert_eq!(v["params"]["preset"], "indoor_columns");
+    let e = fails(
+        placecat()
+            .args(["describe", "--sensor-height", "0"])
+            .arg(dir.join("s.ply"))
+            .arg("-o")
+            .arg(dir.join("e.json")),
+    );
+    assert!(e.contains("sensor_height must be above 0"), "{e}");
+}
+
 #[test]
 fn simulate_describe_cluster_evaluate_round_trip() {
     let dir = tmp("pipeline");

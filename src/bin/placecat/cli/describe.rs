@@ -103,12 +103,17 @@ fn load_params(preset: Option<&str>, params: Option<&Path>) -> Result<Descriptor
 pub fn run(
     preset: Option<&str>,
     params: Option<&Path>,
+    sensor_height: Option<f64>,
     inputs: &[PathBuf],
     output: &Path,
     limits: &ReadOptions,
     bag_args: &BagArgs,
 ) -> Result<ExitCode> {
-    let params = load_params(preset, params)?;
+    let mut params = load_params(preset, params)?;
+    if sensor_height.is_some() {
+        params.sensor_height = sensor_height;
+        params.validate()?;
+    }
     let (set, of) = describe_inputs(inputs, params, limits, bag_args, "describing")?;
     let text = serde_json::to_string(&set)?;
     super::write_out(Some(output), &text)?;

@@ -60,6 +60,12 @@ enum Command {
         /// values: --preset's, else the preset the file names, else indoor).
         #[arg(long)]
         params: Option<PathBuf>,
+        /// The sensor's height above the floor in metres, a constant of the
+        /// robot: the clutter and columns parts then measure heights from a
+        /// floor that far below the sensor instead of each scan's own
+        /// estimate (as "sensor_height" in --params; this flag wins).
+        #[arg(long, value_name = "M")]
+        sensor_height: Option<f64>,
         /// Files or folders, and ROS bags (.bag, .mcap). Folders are
         /// searched with all their subfolders (hidden ones skipped) for
         /// .ply .pcd .bin .las .laz .e57 .bag .mcap, sorted by name. Each
@@ -266,6 +272,7 @@ pub fn main() -> ExitCode {
         Command::Describe {
             preset,
             params,
+            sensor_height,
             inputs,
             output,
             limits,
@@ -273,6 +280,7 @@ pub fn main() -> ExitCode {
         } => describe::run(
             preset.as_deref(),
             params.as_deref(),
+            sensor_height,
             &inputs,
             &output,
             &limits.into(),
