@@ -117,6 +117,9 @@ same('DescriptorParams', pc.presetParams('outdoor'));
 // scale), for the paper's presets as for free_space and a median-scaled set.
 // (Every preset's keys are checked with the Preset literals below.)
 const allKeys = declared('DescriptorParams', true);
+// sensor_height is null when not given, and the .d.ts says so (tsify would
+// otherwise declare a bare number).
+assert.match(dts.match(/export interface DescriptorParams \{[^}]*\}/)[0], /sensor_height\?: number \| null;/, 'sensor_height declared number | null');
 const indoor = pc.presetParams('indoor');
 const indoorKeys = Object.keys(indoor);
 assert.deepEqual([indoor.ndt_weight, indoor.parts, indoor.scale, indoor.sensor_height], [1, [], 'fixed', null], 'the defaults the core leaves out');

@@ -77,7 +77,8 @@ pub const CHANNELS: [usize; 2 + 2 * LEVELS.len()] = [
 
 /// The floor and ceiling heights (relative to the sensor) of a scan: the
 /// 2nd and 98th percentiles of the heights of its points within 8 m
-/// horizontally; None with no such point.
+/// horizontally; None with no such point. Always the estimate: a given
+/// `sensor_height` enters through [`PolarScan::with_sensor_height`].
 pub fn floor_and_ceiling(points: &[[f32; 3]]) -> Option<(f32, f32)> {
     PolarScan::new(points).floor_and_ceiling()
 }
@@ -246,7 +247,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::descriptor::parts::{describe_parts, parts_distance, PartKind};
+    use crate::descriptor::parts::{describe_parts, describe_parts_with, parts_distance, PartKind};
 
     /// Points on the walls, floor and ceiling of a w x d x 3 m box round
     /// the origin (floor at -1.2), every 5 cm, and a table top (0.75 m
@@ -312,10 +313,10 @@ mod tests {
         let given = PolarScan::with_sensor_height(&pts, Some(1.2));
         assert_eq!(given.floor_and_ceiling().unwrap().0, floor);
         let kinds = [PartKind::Clutter];
-        let [v] = &describe_parts(&pts, &kinds, None)[..] else {
+        let [v] = &describe_parts(&pts, &kinds)[..] else {
             panic!()
         };
-        let [w] = &describe_parts(&pts, &kinds, Some(1.2))[..] else {
+        let [w] = &describe_parts_with(&pts, &kinds, Some(1.2))[..] else {
             panic!()
         };
         assert!(
@@ -330,10 +331,10 @@ mod tests {
         );
         // Where the floor is seen, the given height changes little.
         let seen = box_room(6.0, 4.0, true);
-        let [a] = &describe_parts(&seen, &kinds, None)[..] else {
+        let [a] = &describe_parts(&seen, &kinds)[..] else {
             panic!()
         };
-        let [b] = &describe_parts(&seen, &kinds, Some(1.2))[..] else {
+        let [b] = &describe_parts_with(&seen, &kinds, Some(1.2))[..] else {
             panic!()
         };
         assert!(parts_distance(a, b) < 0.05, "{}", parts_distance(a, b));

@@ -170,7 +170,7 @@ pub fn describe(points: &[[f32; 3]], params: &DescriptorParams) -> Result<Descri
             let kinds: Vec<PartKind> = params.parts.iter().map(|p| p.kind).collect();
             kinds
                 .iter()
-                .zip(parts::describe_parts(
+                .zip(parts::describe_parts_with(
                     points,
                     &kinds,
                     params.sensor_height.map(|h| h as f32),

@@ -134,8 +134,10 @@ pub struct DescriptorParams {
     /// a floor this far below the sensor; when left out (the default, and
     /// out of JSON), each scan's floor is estimated from its own points,
     /// which fails where the floor is not seen (a sparse sensor in a small
-    /// room). Only those two parts read it.
+    /// room). Only those two parts read it, so parameters with neither
+    /// refuse it. In JS: `null` when not given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "number | null"))]
     pub sensor_height: Option<f64>,
 }
 
@@ -534,17 +536,29 @@ impl DescriptorParams {
         self.validate_weights()
     }
 
-    /// The weights of the NDT histogram and of the parts: finite, not
-    /// negative, not all zero, each kind of part at most once.
+    /// The sensor's height, where given: in (0, [`MAX_SENSOR_HEIGHT`]] m,
+    /// and read by a part (a value nothing reads would only make
+    /// descriptors that are otherwise alike refuse to mix).
     fn validate_sensor_height(&self) -> Result<()> {
-        match self.sensor_height {
-            Some(h) if !(h.is_finite() && h > 0.0 && h <= MAX_SENSOR_HEIGHT) => invalid(format!(
+        let Some(h) = self.sensor_height else {
+            return Ok(());
+        };
+        if !(h.is_finite() && h > 0.0 && h <= MAX_SENSOR_HEIGHT) {
+            return invalid(format!(
                 "sensor_height must be above 0 and at most {MAX_SENSOR_HEIGHT} m (the sensor's height above the floor), got {h}"
-            )),
-            _ => Ok(()),
+            ));
         }
+        let reads = |p: &Part| matches!(p.kind, PartKind::Clutter | PartKind::Columns);
+        if !self.parts.iter().any(reads) {
+            return invalid(
+                "sensor_height is read only by the clutter and columns parts, and these parameters have neither (presets indoor_clutter and indoor_columns have them)",
+            );
+        }
+        Ok(())
     }
 
+    /// The weights of the NDT histogram and of the parts: finite, not
+    /// negative, not all zero, each kind of part at most once.
     fn validate_weights(&self) -> Result<()> {
         if !(self.ndt_weight.is_finite() && self.ndt_weight >= 0.0) {
             return invalid(format!(

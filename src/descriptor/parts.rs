@@ -85,9 +85,7 @@ impl PartKind {
 
     /// Compute the part from a scan's points (sensor frame, z up).
     pub fn describe(self, points: &[[f32; 3]]) -> Vec<f32> {
-        describe_parts(points, &[self], None)
-            .pop()
-            .unwrap_or_default()
+        describe_parts(points, &[self]).pop().unwrap_or_default()
     }
 
     /// Compute the part from a scan whose ranges and azimuths are
@@ -112,10 +110,14 @@ impl PartKind {
 /// and azimuths ([`PolarScan`]) are computed once, and only when a part
 /// that reads them is asked for: `height_range` and `esf` alone cost no
 /// `hypot` or `atan2` pass.
-///
-/// `sensor_height` (m above the floor), where given, places the floor of
-/// the parts that measure from it ([`PolarScan::with_sensor_height`]).
-pub fn describe_parts(
+/// The floor of the parts that measure from it is each scan's estimate.
+pub fn describe_parts(points: &[[f32; 3]], kinds: &[PartKind]) -> Vec<Vec<f32>> {
+    describe_parts_with(points, kinds, None)
+}
+
+/// [`describe_parts`] with the floor `sensor_height` (m) below the sensor
+/// where it is given ([`PolarScan::with_sensor_height`]).
+pub fn describe_parts_with(
     points: &[[f32; 3]],
     kinds: &[PartKind],
     sensor_height: Option<f32>,
@@ -368,7 +370,7 @@ mod tests {
             .collect();
         let built = |kinds: &[PartKind]| {
             let before = super::super::polar::built();
-            let v = describe_parts(&pts, kinds, None);
+            let v = describe_parts(&pts, kinds);
             assert_eq!(v.len(), kinds.len());
             super::super::polar::built() - before
         };

@@ -2,6 +2,7 @@
 //! and JSON round trips of descriptors and models that hold them.
 
 use crate::common::*;
+use placecat::descriptor::parts::parts_distance;
 use placecat::descriptor::{slice, Part, PartKind, PRESETS};
 use placecat::model::LabelledModel;
 use placecat::{delta, describe, Descriptor, DescriptorParams, DistanceOptions};
@@ -518,7 +519,7 @@ fn hand_made_distance_weights_are_checked() {
 /// histogram and the other parts stay bit for bit the same.
 #[test]
 fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
-    for bad in [0.0, -1.0, 20.5, f64::NAN, f64::INFINITY] {
+    for bad in [0.0, -1.0, 20.01, f64::NAN, f64::INFINITY] {
         let p = DescriptorParams {
             sensor_height: Some(bad),
             ..every_part(1.0)
@@ -526,6 +527,23 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
         let e = p.validate().unwrap_err().to_string();
         assert!(e.contains("sensor_height"), "{bad}: {e}");
     }
+    let highest = DescriptorParams {
+        sensor_height: Some(20.0),
+        ..every_part(1.0)
+    };
+    assert!(highest.validate().is_ok());
+    // Nothing would read it: refused, naming the parts that would.
+    let e = DescriptorParams {
+        sensor_height: Some(1.2),
+        ..DescriptorParams::indoor()
+    }
+    .validate()
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains("sensor_height is read only by the clutter and columns parts"),
+        "{e}"
+    );
     let json = serde_json::to_string(&every_part(1.0)).unwrap();
     assert!(!json.contains("sensor_height"), "{json}");
     let given = DescriptorParams {
@@ -546,5 +564,28 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
     for (x, y) in a.parts.iter().zip(&b.parts) {
         let floor_bound = matches!(x.kind, PartKind::Clutter | PartKind::Columns);
         assert_eq!(x.values == y.values, !floor_bound, "{:?}", x.kind);
+    }
+    // Given as its true 1.2 m, the floor is where the estimate found it:
+    // the two parts stay near the estimate's, nearer than at 1.05 m.
+    let true_height = describe(
+        &pts,
+        &DescriptorParams {
+            sensor_height: Some(1.2),
+            ..every_part(1.0)
+        },
+    )
+    .unwrap();
+    for ((x, y), z) in a.parts.iter().zip(&b.parts).zip(&true_height.parts) {
+        if matches!(x.kind, PartKind::Clutter | PartKind::Columns) {
+            let (off, right) = (
+                parts_distance(&x.values, &y.values),
+                parts_distance(&x.values, &z.values),
+            );
+            assert!(
+                right < 0.05 && right < off / 2.0,
+                "{:?}: {right} against {off}",
+                x.kind
+            );
+        }
     }
 }
