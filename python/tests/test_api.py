@@ -142,3 +142,20 @@ def test_describe_releases_the_gil(room):
     length = span["end"] - span["start"]
     inside = [x for x in ticks if span["start"] + 0.1 * length < x < span["end"] - 0.1 * length]
     assert len(inside) >= 3, (len(inside), length)
+
+
+def test_sensor_height_is_kept_checked_and_not_mixed(room):
+    """A given sensor height travels with the descriptor's parameters, a bad one
+    is the core's error naming the field, and descriptors made with and without
+    it (otherwise the same parameters) do not mix in one collection."""
+    given = placecat.describe(room, {"preset": "indoor_columns", "sensor_height": 1.2})
+    assert given.params["sensor_height"] == 1.2
+    estimated = placecat.describe(room, "indoor_columns")
+    assert "sensor_height" not in estimated.params
+    for bad, pattern in [(0, "sensor_height must be above 0"), (1.2, "read only by the clutter and columns parts")]:
+        preset = "indoor_columns" if bad == 0 else "indoor"
+        with pytest.raises(placecat.PlacecatError, match=pattern):
+            placecat.describe(room, {"preset": preset, "sensor_height": bad})
+    c = placecat.Collection([estimated])
+    with pytest.raises(placecat.PlacecatError, match="other parameters"):
+        c.add(given, "given.pcd")
