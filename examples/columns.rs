@@ -17,7 +17,6 @@
 //! The test run refuses to overwrite its report.
 
 use placecat::sim::SceneKind;
-use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
 
@@ -26,7 +25,7 @@ mod families;
 use families::*;
 #[path = "common/real.rs"]
 mod real;
-use real::{real_rows, real_table, RealRow};
+use real::{real_rows, real_table};
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
@@ -55,17 +54,6 @@ const FILES: RoundFiles = RoundFiles {
     report: "columns.json",
     md: "columns.md",
 };
-
-type Part = site_rounds::Part<FamilySet, ()>;
-
-#[derive(Serialize, Deserialize)]
-struct Report {
-    presets: Vec<(String, Vec<String>)>,
-    dev: Part,
-    test: Part,
-    #[serde(default)]
-    real: Vec<RealRow>,
-}
 
 /// Each family's presets of rounds 2-3, then this round's; the fresh
 /// family's after them.
@@ -235,7 +223,7 @@ fn main() -> Res<()> {
                     no_site,
                     family_set,
                 )?,
-                test: Part::default(),
+                test: FamilyPart::default(),
                 real: vec![],
             })
         },

@@ -19,7 +19,6 @@
 use placecat::descriptor::{DescriptorParams, Part, PartKind, Scale};
 use placecat::distance::scale::resolve;
 use placecat::DistanceOptions;
-use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
 
@@ -28,7 +27,7 @@ mod families;
 use families::*;
 #[path = "common/real.rs"]
 mod real;
-use real::{real_rows, real_table, RealRow};
+use real::real_table;
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
@@ -112,17 +111,6 @@ const CANDIDATES: &[Candidate] = &[
     },
 ];
 
-type RoundPart = site_rounds::Part<FamilySet, ()>;
-
-#[derive(Serialize, Deserialize)]
-struct Report {
-    presets: Vec<(String, Vec<String>)>,
-    dev: RoundPart,
-    test: RoundPart,
-    #[serde(default)]
-    real: Vec<RealRow>,
-}
-
 /// Each family's presets of rounds 2-3, `indoor_columns`, the outdoor
 /// family's `outdoor_near`, then the candidates; the hospital floors with
 /// the paper's, `indoor_clutter`, `indoor_columns` and the candidates.
@@ -183,13 +171,6 @@ fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<
         scans: set.scans,
         presets: out,
     })
-}
-
-/// Every family, the hospital floors after them.
-fn all_families() -> Vec<Family> {
-    let mut f = families();
-    f.push(hospital_family());
-    f
 }
 
 /// Each term's median over the pairs of `indoor_columns`' descriptors of
@@ -264,16 +245,6 @@ fn render(r: &Report) -> Res<String> {
     Ok(o)
 }
 
-/// Every family and the hospital floors on `seeds`.
-fn run_families(presets: &[(String, Vec<String>)], seeds: &[u64], what: &str) -> Res<RoundPart> {
-    let (families, seconds) = every_set_of(all_families(), presets, seeds, what, family_set)?;
-    Ok(RoundPart {
-        families,
-        seconds,
-        ..RoundPart::default()
-    })
-}
-
 fn main() -> Res<()> {
     if std::env::args().any(|a| a == "--medians") {
         return medians();
@@ -284,34 +255,12 @@ fn main() -> Res<()> {
     }
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let presets = round_presets(&docs)?;
-    round_main(
+    every_family_round(
         &FILES,
-        || {
-            Ok(Report {
-                presets: presets.clone(),
-                dev: run_families(&presets, FAMILY_DEV, "dev")?,
-                test: RoundPart::default(),
-                real: vec![],
-            })
-        },
-        |r| {
-            let mut o = String::new();
-            family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
-            Ok(o)
-        },
-        |dev| {
-            let test = run_families(&presets, FAMILY_TEST, "test")?;
-            let described: Vec<(String, Vec<String>)> = presets
-                .iter()
-                .map(|(f, n)| (f.clone(), described(n)))
-                .collect();
-            Ok(Report {
-                presets: presets.clone(),
-                dev: dev.dev,
-                test,
-                real: real_rows(&described)?,
-            })
-        },
+        &presets,
+        (FAMILY_DEV, FAMILY_TEST),
+        family_set,
+        described,
         render,
     )
 }

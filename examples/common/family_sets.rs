@@ -1,13 +1,100 @@
 //! What the rounds that add a preset to every family share (round 8,
-//! `columns.rs`; round 9, `scaled.rs`): a set's figures for each preset,
-//! and the table of their means by family and sensor. Include after
-//! `families.rs`, `rounds.rs` and `preset_rounds.rs`.
+//! `columns.rs`; round 9, `scaled.rs`; round 10, `floor.rs`): a set's
+//! figures for each preset, the table of their means by family and
+//! sensor, the report, and (rounds 9 and 10) the run over every family.
+//! Include after `families.rs`, `real.rs`, `rounds.rs`, `site_rounds.rs`
+//! and `preset_rounds.rs`.
 
-use crate::families::pct;
+use crate::families::{families, hospital_family, pct, Family, Sensor};
 use crate::preset_rounds::Figures;
-use crate::rounds::{each_row, lowest_over, mean_over, target, Res};
+use crate::real::{real_rows, RealRow};
+use crate::rounds::{each_row, every_set_of, lowest_over, mean_over, target, Res};
+use crate::site_rounds::{round_main, RoundFiles};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
+
+/// A round's sets on one kind of seeds.
+pub type FamilyPart = crate::site_rounds::Part<FamilySet, ()>;
+
+/// A round's report: the presets of each family, the development and test
+/// sets, and the real scans' same-place retrieval (test run only).
+#[derive(Serialize, Deserialize)]
+pub struct Report {
+    pub presets: Vec<(String, Vec<String>)>,
+    pub dev: FamilyPart,
+    pub test: FamilyPart,
+    #[serde(default)]
+    pub real: Vec<RealRow>,
+}
+
+/// Every family, the hospital floors after them.
+#[allow(dead_code)] // rounds 9 and 10; round 8 added the hospital itself
+pub fn all_families() -> Vec<Family> {
+    let mut f = families();
+    f.push(hospital_family());
+    f
+}
+
+/// Every family and the hospital floors on `seeds`, each set by `each`.
+#[allow(dead_code)] // rounds 9 and 10
+fn run_families(
+    presets: &[(String, Vec<String>)],
+    seeds: &[u64],
+    what: &str,
+    each: fn(&Family, Sensor, u64, &[String]) -> Res<FamilySet>,
+) -> Res<FamilyPart> {
+    let (families, seconds) = every_set_of(all_families(), presets, seeds, what, each)?;
+    Ok(FamilyPart {
+        families,
+        seconds,
+        ..FamilyPart::default()
+    })
+}
+
+/// The main of a round over every family ([`round_main`]): `--dev` on
+/// `dev_seeds`; else `test_seeds`, once, and the real scans with the
+/// presets that `described` keeps of each family's (the candidates are
+/// no presets).
+#[allow(dead_code)] // rounds 9 and 10
+pub fn every_family_round(
+    files: &RoundFiles,
+    presets: &[(String, Vec<String>)],
+    (dev_seeds, test_seeds): (&[u64], &[u64]),
+    each: fn(&Family, Sensor, u64, &[String]) -> Res<FamilySet>,
+    described: fn(&[String]) -> Vec<String>,
+    render: fn(&Report) -> Res<String>,
+) -> Res<()> {
+    round_main(
+        files,
+        || {
+            Ok(Report {
+                presets: presets.to_vec(),
+                dev: run_families(presets, dev_seeds, "dev", each)?,
+                test: FamilyPart::default(),
+                real: vec![],
+            })
+        },
+        |r| {
+            let mut o = String::new();
+            family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
+            Ok(o)
+        },
+        |dev| {
+            let test = run_families(presets, test_seeds, "test", each)?;
+            let kept: Vec<(String, Vec<String>)> = presets
+                .iter()
+                .map(|(f, n)| (f.clone(), described(n)))
+                .collect();
+            Ok(Report {
+                presets: presets.to_vec(),
+                dev: dev.dev,
+                test,
+                real: real_rows(&kept)?,
+            })
+        },
+        render,
+    )
+}
 
 #[derive(Serialize, Deserialize, Clone)]
 pub struct FamilySet {
