@@ -164,6 +164,20 @@ impl Collection {
         Ok(self.descriptors.len() - 1)
     }
 
+    /// Add a descriptor made with `made_with`: refused, as by [`push`](Self::push),
+    /// unless it fits, and then unless `made_with` equals the collection's
+    /// parameters but for the preset's name (the message names the field).
+    pub fn push_made_with(
+        &mut self,
+        name: String,
+        d: Descriptor,
+        made_with: &DescriptorParams,
+    ) -> Result<usize> {
+        d.validate_for(&self.params)?;
+        self.params.check_made_with(made_with, "collection")?;
+        self.push(name, d)
+    }
+
     /// The descriptor parameters.
     pub fn params(&self) -> &DescriptorParams {
         &self.params

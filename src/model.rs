@@ -313,6 +313,19 @@ impl LabelledModel {
         }
     }
 
+    /// The nearest category of a scan described with `made_with`, refused
+    /// unless those are the model's parameters but for the preset's name
+    /// (a scan of another `sensor_height` or voxel size has the same shape
+    /// and would be classified by a distance that means nothing).
+    pub fn classify_made_with(
+        &self,
+        d: &Descriptor,
+        made_with: &DescriptorParams,
+    ) -> Result<Classification> {
+        self.params.check_made_with(made_with, "model")?;
+        self.classify(d)
+    }
+
     /// The nearest category of a described scan.
     pub fn classify(&self, d: &Descriptor) -> Result<Classification> {
         check_shape((d.rows, d.cols), (self.rows, self.cols))?;

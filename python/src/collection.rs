@@ -327,17 +327,13 @@ pub(crate) fn names_json(names: &Bound<'_, PyAny>) -> PyResult<serde_json::Value
 }
 
 fn add(inner: &mut Collection, name: String, d: &PyDescriptor) -> PyResult<usize> {
-    if &d.params != inner.params() {
-        return Err(core_err(
-            placecat::Error::Mismatch(
-                "the descriptor was made with other parameters than the collection's".into(),
-            )
-            .in_file(name),
-        ));
-    }
-    inner
-        .push(name.clone(), d.descriptor.clone())
-        .map_err(|e| core_err(e.in_file(name)))
+    // The parameters first, so a descriptor of another preset is named as
+    // that, not as a shape that does not fit.
+    let added = inner
+        .params()
+        .check_made_with(&d.params, "collection")
+        .and_then(|()| inner.push(name.clone(), d.descriptor.clone()));
+    added.map_err(|e| core_err(e.in_file(name)))
 }
 
 /// The hierarchical k-means++ tree: cut at a height or into k categories

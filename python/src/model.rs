@@ -79,14 +79,9 @@ impl PyModel {
         py: Python<'py>,
         descriptor: PyRef<'py, PyDescriptor>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        if descriptor.params != self.model.params {
-            return Err(core_err(Error::Mismatch(
-                "the descriptor was made with other parameters than the model's".into(),
-            )));
-        }
         let answer = self
             .model
-            .classify(&descriptor.descriptor)
+            .classify_made_with(&descriptor.descriptor, &descriptor.params)
             .map_err(core_err)?;
         to_py(py, &answer)
     }

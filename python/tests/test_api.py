@@ -157,5 +157,11 @@ def test_sensor_height_is_kept_checked_and_not_mixed(room):
         with pytest.raises(placecat.PlacecatError, match=pattern):
             placecat.describe(room, {"preset": preset, "sensor_height": bad})
     c = placecat.Collection([estimated])
-    with pytest.raises(placecat.PlacecatError, match="other parameters"):
+    with pytest.raises(placecat.PlacecatError, match=r"given.pcd: .*other parameters than the collection's \(sensor_height: 1.2 against the expected none\)"):
         c.add(given, "given.pcd")
+    # A model classifies only scans described with its own parameters.
+    c.add(placecat.describe(room[::2], "indoor_columns"), "half.pcd")
+    m = c.build_model([0, 1], {0: "a", 1: "b"})
+    assert m.classify(estimated)["name"] == "a"
+    with pytest.raises(placecat.PlacecatError, match=r"the model's \(sensor_height: 1.2 against the expected none\)"):
+        m.classify(given)

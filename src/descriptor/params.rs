@@ -457,6 +457,35 @@ impl DescriptorParams {
         self.ranges.len()
     }
 
+    /// Refuse descriptors made with `made_with` where these parameters are
+    /// expected: every value but the informational `preset` must be equal,
+    /// since two sets of parameters of the same shape (another
+    /// `sensor_height`, voxel size or weight) make descriptors that fit
+    /// together but do not compare. The message names the first field that
+    /// differs and `expected_by` ("collection", "model"), and keeps the
+    /// words "other parameters".
+    pub fn check_made_with(&self, made_with: &DescriptorParams, expected_by: &str) -> Result<()> {
+        if self.same_but_preset(made_with) {
+            return Ok(());
+        }
+        let (ours, theirs) = (field_values(self), field_values(made_with));
+        let field = ours
+            .iter()
+            .zip(&theirs)
+            .find(|(a, b)| a != b)
+            .map(|((k, a), (_, b))| format!(" ({k}: {} against the expected {})", b, a))
+            .unwrap_or_default();
+        Err(crate::Error::Mismatch(format!(
+            "the descriptor was made with other parameters than the {expected_by}'s{field}"
+        )))
+    }
+
+    fn same_but_preset(&self, other: &DescriptorParams) -> bool {
+        let mut other = other.clone();
+        other.preset.clone_from(&self.preset);
+        *self == other
+    }
+
     /// Check every value; the message names the parameter.
     pub fn validate(&self) -> Result<()> {
         if self.spherical_classes == 0 || self.planar_classes == 0 || self.linear_classes == 0 {
@@ -598,9 +627,67 @@ impl DescriptorParams {
     }
 }
 
+/// Each field but `preset` as (name, JSON text), by name, with
+/// a field left out of JSON (an unset `sensor_height`) as `none`.
+fn field_values(p: &DescriptorParams) -> Vec<(String, String)> {
+    let mut value = serde_json::to_value(p).unwrap_or_default();
+    let Some(map) = value.as_object_mut() else {
+        return Vec::new();
+    };
+    map.remove("preset");
+    map.entry("sensor_height")
+        .or_insert(serde_json::Value::Null);
+    map.iter()
+        .map(|(k, v)| {
+            let text = if v.is_null() {
+                "none".to_string()
+            } else {
+                v.to_string()
+            };
+            (k.clone(), text)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Parameters of the same shape but another value are other
+    /// parameters: the message names the field and both values; the
+    /// preset's name alone is not a difference.
+    #[test]
+    fn descriptors_of_other_parameters_are_named_by_the_field() {
+        let columns = DescriptorParams::indoor_columns();
+        let mut renamed = columns.clone();
+        renamed.preset = "mine".into();
+        assert!(columns.check_made_with(&renamed, "collection").is_ok());
+        let mut mounted = columns.clone();
+        mounted.sensor_height = Some(1.15);
+        let e = columns
+            .check_made_with(&mounted, "model")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains(
+                "other parameters than the model's (sensor_height: 1.15 against the expected none)"
+            ),
+            "{e}"
+        );
+        let mut coarse = columns.clone();
+        coarse.voxel_size *= 2.0;
+        let e = coarse
+            .check_made_with(&columns, "collection")
+            .unwrap_err()
+            .to_string();
+        let (ours, theirs) = (coarse.voxel_size, columns.voxel_size);
+        assert!(
+            e.contains(&format!(
+                "(voxel_size: {theirs} against the expected {ours})"
+            )),
+            "{e}"
+        );
+    }
 
     /// The preset table is the one list: each entry makes parameters that
     /// carry its name, and the JS `Preset` type and the README's

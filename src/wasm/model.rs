@@ -91,10 +91,15 @@ impl Model {
     /// Classify a described scan: `{name, label, distance, relative}`
     /// (`relative` = distance / the category's radius; > 1: farther than
     /// any scan it was made from; `Infinity` for a one-scan category and
-    /// any other scan).
+    /// any other scan). Refused, naming the scan and the first parameter
+    /// that differs, unless the scan was described with the model's
+    /// parameters (the preset's name aside).
     #[wasm_bindgen(unchecked_return_type = "Classification")]
     pub fn classify(&self, scan: &DescribedScan) -> WasmResult<JsValue> {
-        to_js(&self.model.classify(&scan.descriptor)?)
+        let c = self
+            .model
+            .classify_made_with(&scan.descriptor, &scan.params);
+        to_js(&c.map_err(|e| e.in_file(&scan.name))?)
     }
     /// Classify a descriptor given as JSON text.
     #[wasm_bindgen(js_name = classifyJson, unchecked_return_type = "Classification")]

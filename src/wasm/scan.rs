@@ -50,6 +50,9 @@ pub struct DescribedScan {
     pub(super) name: String,
     format: &'static str,
     pub(super) descriptor: Descriptor,
+    /// The parameters it was described with: a set or a model of other
+    /// parameters refuses it (same shape is not same meaning).
+    pub(super) params: DescriptorParams,
     preview: Vec<f32>,
     /// Where the recording put the sensor (bag clouds, E57 stations); None for files.
     pose: Option<io::poses::Pose>,
@@ -72,6 +75,7 @@ impl DescribedScan {
             format,
             preview: crate::cloud::decimate_counted(points, finite, preview_points.unwrap_or(4000)),
             descriptor,
+            params: params.clone(),
             pose: None,
         })
     }

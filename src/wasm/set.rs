@@ -28,9 +28,14 @@ impl DescriptorSet {
         let name = format!("scan {}", self.set.len());
         Ok(self.set.push(name, descriptor_from_json(json)?)?)
     }
-    /// Add a described scan; returns its index.
+    /// Add a described scan; returns its index. Refused, naming the scan
+    /// and the first parameter that differs, unless it was described with
+    /// the set's parameters (the preset's name aside).
     pub fn add(&mut self, scan: &DescribedScan) -> WasmResult<usize> {
-        Ok(self.set.push(scan.name.clone(), scan.descriptor.clone())?)
+        let added =
+            self.set
+                .push_made_with(scan.name.clone(), scan.descriptor.clone(), &scan.params);
+        Ok(added.map_err(|e| e.in_file(&scan.name))?)
     }
     #[wasm_bindgen(getter)]
     /// Number of scans in the set.

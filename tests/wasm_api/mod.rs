@@ -307,6 +307,34 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
         e.contains("the descriptor is 11x5, the set's parameters make 11x7"),
         "{e}"
     );
+    // Same shape, other parameters (a coarser voxel): refused by the set
+    // and by a model, naming the scan and the field.
+    let coarse = js_sys::JSON::parse(r#"{"voxel_size": 1.2}"#).unwrap();
+    let other = describe_scan(
+        u8a(PARITY_FILES[0].1),
+        "coarse.bin",
+        Some(coarse),
+        Some("indoor".into()),
+        None,
+    )
+    .unwrap();
+    let e = message(set.add(&other).err().unwrap());
+    assert!(
+        e.contains("coarse.bin: ")
+            && e.contains(
+                "other parameters than the collection's (voxel_size: 1.2 against the expected 0.4)"
+            ),
+        "{e}"
+    );
+    let labels = [0, 0, 1, 1, 1, 1];
+    let names = js_sys::JSON::parse(r#"{"0": "a", "1": "b"}"#).unwrap();
+    let model = set.build_model(&labels, names).unwrap();
+    assert!(model.classify(&scans[0]).is_ok());
+    let e = message(model.classify(&other).err().unwrap());
+    assert!(
+        e.contains("coarse.bin: ") && e.contains("the model's (voxel_size: 1.2"),
+        "{e}"
+    );
     let json = scans[0].descriptor_json().unwrap();
     let cut = json.replacen(",0,", ",", 1);
     let e = message(set.add_json(&cut).err().unwrap());
