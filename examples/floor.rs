@@ -48,10 +48,6 @@ mod seeds;
 /// Fixed in docs/seeds.md ("issue 18, tenth round") before any run.
 const FAMILY_DEV: &[u64] = &[1, 2, 3, 4, 5, 6];
 const FAMILY_TEST: &[u64] = &[391, 392, 393, 394, 395];
-/// The eighth round's preset, which every candidate gives a floor.
-const BASE: &str = "indoor_columns";
-/// The seventh round's outdoor preset, on which the outdoor target is read.
-const OUTDOOR_NEAR: &str = "outdoor_near";
 const FILES: RoundFiles = RoundFiles {
     dev: "floor-dev.json",
     report: "floor.json",
@@ -95,35 +91,6 @@ fn with_height(name: &str, height: f64) -> DescriptorParams {
         sensor_height: Some(height),
         ..DescriptorParams::indoor_columns()
     }
-}
-
-/// Whether a family is one of rooms (the candidates run on those).
-fn of_rooms(family: &str) -> bool {
-    target(family) == target("rooms")
-}
-
-/// Each family's presets of rounds 2-3, `indoor_columns`, the outdoor
-/// family's `outdoor_near`; the room families' then the candidates; the
-/// hospital floors with the paper's, `indoor_clutter`, `indoor_columns`
-/// and the candidates.
-fn round_presets(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
-    let mut presets = presets_of(docs)?;
-    presets.push((
-        hospital_family().name.to_string(),
-        vec!["indoor".into(), "indoor_clutter".into()],
-    ));
-    for (family, names) in &mut presets {
-        if family == "outdoor" {
-            names.push(OUTDOOR_NEAR.into());
-        }
-        if !names.iter().any(|n| n == BASE) {
-            names.push(BASE.into());
-        }
-        if of_rooms(family) {
-            names.extend(CANDIDATES.iter().map(|c| c.to_string()));
-        }
-    }
-    Ok(presets)
 }
 
 /// The presets to describe with: `names` but the candidates.
@@ -214,7 +181,7 @@ fn main() -> Res<()> {
         return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
     }
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let presets = round_presets(&docs)?;
+    let presets = round_presets(&docs, &CANDIDATES)?;
     every_family_round(
         &FILES,
         &presets,

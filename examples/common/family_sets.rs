@@ -8,10 +8,11 @@
 use crate::families::{families, hospital_family, pct, Family, Sensor};
 use crate::preset_rounds::Figures;
 use crate::real::{real_rows, RealRow};
-use crate::rounds::{each_row, every_set_of, lowest_over, mean_over, target, Res};
+use crate::rounds::{each_row, every_set_of, lowest_over, mean_over, presets_of, target, Res};
 use crate::site_rounds::{round_main, RoundFiles};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
+use std::path::Path;
 
 /// A round's sets on one kind of seeds.
 pub type FamilyPart = crate::site_rounds::Part<FamilySet, ()>;
@@ -25,6 +26,44 @@ pub struct Report {
     pub test: FamilyPart,
     #[serde(default)]
     pub real: Vec<RealRow>,
+}
+
+/// The eighth round's preset, on which rounds 10 and 11 build candidates.
+#[allow(dead_code)]
+pub const BASE: &str = "indoor_columns";
+/// The seventh round's outdoor preset, on which the outdoor target is read.
+#[allow(dead_code)]
+const OUTDOOR_NEAR: &str = "outdoor_near";
+
+/// Whether a family is one of rooms (the candidates run on those).
+#[allow(dead_code)]
+pub fn of_rooms(family: &str) -> bool {
+    target(family) == target("rooms")
+}
+
+/// Each family's presets of rounds 2-3, [`BASE`], the outdoor family's
+/// `outdoor_near`; the room families' then `candidates`; the hospital
+/// floors with the paper's, `indoor_clutter`, [`BASE`] and the candidates
+/// (rounds 10 and 11).
+#[allow(dead_code)]
+pub fn round_presets(docs: &Path, candidates: &[&str]) -> Res<Vec<(String, Vec<String>)>> {
+    let mut presets = presets_of(docs)?;
+    presets.push((
+        hospital_family().name.to_string(),
+        vec!["indoor".into(), "indoor_clutter".into()],
+    ));
+    for (family, names) in &mut presets {
+        if family == "outdoor" {
+            names.push(OUTDOOR_NEAR.into());
+        }
+        if !names.iter().any(|n| n == BASE) {
+            names.push(BASE.into());
+        }
+        if of_rooms(family) {
+            names.extend(candidates.iter().map(|c| c.to_string()));
+        }
+    }
+    Ok(presets)
 }
 
 /// Every family, the hospital floors after them.

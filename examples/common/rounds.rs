@@ -6,7 +6,7 @@
 
 use crate::families::{sim_params, Family, Sensor};
 use placecat::eval::evaluate;
-use placecat::sim::{SceneKind, Simulation};
+use placecat::sim::{SceneKind, SimScan, Simulation};
 use placecat::*;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -115,6 +115,10 @@ pub fn describe_set(
     describe_set_with(f, sensor, seed, presets, |_| Ok(vec![]))
 }
 
+/// Parameters made for one simulated scan from a set's (round 11: its true
+/// floor).
+pub type PerScan = fn(&DescriptorParams, &SimScan) -> DescriptorParams;
+
 /// [`describe_set`], then each of the parameters `extra` makes from the
 /// simulation (named as it names them; round 10: a floor found from the
 /// set's scans).
@@ -126,22 +130,55 @@ pub fn describe_set_with(
     extra: impl FnOnce(&Simulation) -> Res<Vec<(String, DescriptorParams)>>,
 ) -> Res<DescribedSet> {
     let sim = Simulation::new(&sim_params(f, sensor, seed)?)?;
-    let mut params: Vec<DescriptorParams> = presets
-        .iter()
-        .map(|p| DescriptorParams::preset(p))
-        .collect::<placecat::Result<_>>()?;
     let extra = extra(&sim)?;
+    let extra = extra.into_iter().map(|(n, p)| (n, p, None)).collect();
+    describe_simulated(f, &sim, presets, extra)
+}
+
+/// [`describe_set`], then each of `per_scan`'s parameters as its function
+/// makes them for each scan (named by the first; the set keeps the
+/// parameters given, which every scan's fit in shape).
+#[allow(dead_code)] // the eleventh round (true_floor.rs)
+pub fn describe_set_per_scan(
+    f: &Family,
+    sensor: Sensor,
+    seed: u64,
+    presets: &[String],
+    per_scan: &[(String, DescriptorParams, PerScan)],
+) -> Res<DescribedSet> {
+    let sim = Simulation::new(&sim_params(f, sensor, seed)?)?;
+    let extra = (per_scan.iter())
+        .map(|(n, p, make)| (n.clone(), p.clone(), Some(*make)))
+        .collect();
+    describe_simulated(f, &sim, presets, extra)
+}
+
+fn describe_simulated(
+    f: &Family,
+    sim: &Simulation,
+    presets: &[String],
+    extra: Vec<(String, DescriptorParams, Option<PerScan>)>,
+) -> Res<DescribedSet> {
+    let mut params: Vec<(DescriptorParams, Option<PerScan>)> = presets
+        .iter()
+        .map(|p| DescriptorParams::preset(p).map(|p| (p, None)))
+        .collect::<placecat::Result<_>>()?;
     let names: Vec<String> = (presets.iter().cloned())
         .chain(extra.iter().map(|e| e.0.clone()))
         .collect();
-    params.extend(extra.into_iter().map(|e| e.1));
+    params.extend(extra.into_iter().map(|e| (e.1, e.2)));
     // Each scan has its own RNG stream, so describing in parallel changes
     // no figure.
     let per_scan: Vec<Vec<placecat::Result<Descriptor>>> = (0..sim.len())
         .into_par_iter()
         .map(|i| {
-            let points = sim.scan(i).points;
-            params.iter().map(|p| describe(&points, p)).collect()
+            let scan = sim.scan(i);
+            (params.iter())
+                .map(|(p, make)| match make {
+                    Some(make) => describe(&scan.points, &make(p, &scan)),
+                    None => describe(&scan.points, p),
+                })
+                .collect()
         })
         .collect();
     let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
@@ -149,7 +186,7 @@ pub fn describe_set_with(
     kinds.sort();
     kinds.dedup();
     let mut described = vec![];
-    for (j, p) in params.into_iter().enumerate() {
+    for (j, (p, _)) in params.into_iter().enumerate() {
         let ds: Option<Vec<Descriptor>> = per_scan
             .iter()
             .map(|s| s[j].as_ref().ok().cloned())
