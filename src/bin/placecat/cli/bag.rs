@@ -1,6 +1,6 @@
 //! ROS bags on the command line: `placecat topics BAG` and the bag inputs of
 //! `placecat describe` (each cloud of the chosen topic is one scan, named
-//! `BAGNAME:TOPIC:INDEX`).
+//! `BAG:TOPIC:INDEX` by the bag's path relative to the inputs' root).
 
 use super::describe::{DescribedFile, DescriptorsFile, FileError, ScanPose};
 use super::names::Input;
@@ -11,20 +11,6 @@ use placecat::io::ReadLimits;
 use placecat::Result;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
-
-/// A bag cloud's name with the bag's relative path in front: the reader
-/// names it `BAGNAME:TOPIC:INDEX` by the bag's base name.
-fn renamed(scan_name: &str, bag: &Input) -> String {
-    let base = bag
-        .path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    match scan_name.strip_prefix(base.as_str()) {
-        Some(rest) => format!("{}{rest}", bag.name),
-        None => scan_name.to_string(),
-    }
-}
 use std::process::ExitCode;
 
 /// How `describe` reads ROS bags (`.bag`, `.mcap`); no effect on other files.
@@ -131,7 +117,10 @@ pub fn describe(
         let shown = bag.display().to_string();
         let opened = match unsupported(bag) {
             Some(e) => Err(e),
-            None => BagReader::open_path(bag, opts.clone()),
+            // Clouds are named `RELATIVE_PATH:TOPIC:INDEX` (their poses
+            // and errors too), so two `run.bag` in different folders keep
+            // apart.
+            None => BagReader::open_path(bag, opts.clone()).map(|r| r.with_prefix(&input.name)),
         };
         let mut reader = match opened {
             Ok(r) => r,
@@ -165,12 +154,6 @@ pub fn describe(
             }
             if batch.is_empty() {
                 break;
-            }
-            for scan in &mut batch {
-                scan.name = renamed(&scan.name, input);
-                if let Some(p) = &mut scan.pose {
-                    p.name = Some(scan.name.clone());
-                }
             }
             let params: &DescriptorParams = &set.params;
             let described: Vec<_> = batch
