@@ -164,16 +164,18 @@ impl Collection {
         Ok(self.descriptors.len() - 1)
     }
 
-    /// Add a descriptor made with `made_with`: refused, as by [`push`](Self::push),
-    /// unless it fits, and then unless `made_with` equals the collection's
-    /// parameters but for the preset's name (the message names the field).
+    /// Add a descriptor made with `made_with`: refused unless `made_with`
+    /// equals the collection's parameters but for the preset's name (the
+    /// message names the field), and then, as by [`push`](Self::push),
+    /// unless it fits. The parameters first, as a model's classify checks
+    /// them, so a descriptor of another preset is named as that, not as a
+    /// shape that does not fit.
     pub fn push_made_with(
         &mut self,
         name: String,
         d: Descriptor,
         made_with: &DescriptorParams,
     ) -> Result<usize> {
-        d.validate_for(&self.params)?;
         self.params.check_made_with(made_with, "collection")?;
         self.push(name, d)
     }

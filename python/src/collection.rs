@@ -327,12 +327,7 @@ pub(crate) fn names_json(names: &Bound<'_, PyAny>) -> PyResult<serde_json::Value
 }
 
 fn add(inner: &mut Collection, name: String, d: &PyDescriptor) -> PyResult<usize> {
-    // The parameters first, so a descriptor of another preset is named as
-    // that, not as a shape that does not fit.
-    let added = inner
-        .params()
-        .check_made_with(&d.params, "collection")
-        .and_then(|()| inner.push(name.clone(), d.descriptor.clone()));
+    let added = inner.push_made_with(name.clone(), d.descriptor.clone(), &d.params);
     added.map_err(|e| core_err(e.in_file(name)))
 }
 

@@ -5,6 +5,7 @@
 use super::parts::{Part, PartKind, MAX_PARTS};
 use crate::error::{invalid, Result};
 use serde::{Deserialize, Serialize};
+use std::collections::{BTreeMap, BTreeSet};
 
 /// Most cells (rows x cols) one matrix F may have: 4 MB of counts. The
 /// paper's F has 77.
@@ -469,11 +470,19 @@ impl DescriptorParams {
             return Ok(());
         }
         let (ours, theirs) = (field_values(self), field_values(made_with));
-        let field = ours
-            .iter()
-            .zip(&theirs)
-            .find(|(a, b)| a != b)
-            .map(|((k, a), (_, b))| format!(" ({k}: {} against the expected {})", b, a))
+        // By key, over both sides: a field one side lacks (a newer
+        // version's) still lines up with the other's.
+        let keys: BTreeSet<&String> = ours.keys().chain(theirs.keys()).collect();
+        let missing = "left out".to_string();
+        let field = keys
+            .into_iter()
+            .find_map(|k| {
+                let (a, b) = (
+                    ours.get(k).unwrap_or(&missing),
+                    theirs.get(k).unwrap_or(&missing),
+                );
+                (a != b).then(|| format!(" ({k}: {b} against the expected {a})"))
+            })
             .unwrap_or_default();
         Err(crate::Error::Mismatch(format!(
             "the descriptor was made with other parameters than the {expected_by}'s{field}"
@@ -627,16 +636,27 @@ impl DescriptorParams {
     }
 }
 
-/// Each field but `preset` as (name, JSON text), by name, with
-/// a field left out of JSON (an unset `sensor_height`) as `none`.
-fn field_values(p: &DescriptorParams) -> Vec<(String, String)> {
+/// Each field but `preset` as name -> JSON text, with the fields JSON
+/// leaves out at their usual value written in (`sensor_height` unset as
+/// `none`), so both sides of a comparison hold every field.
+fn field_values(p: &DescriptorParams) -> BTreeMap<String, String> {
     let mut value = serde_json::to_value(p).unwrap_or_default();
     let Some(map) = value.as_object_mut() else {
-        return Vec::new();
+        return BTreeMap::new();
     };
     map.remove("preset");
-    map.entry("sensor_height")
-        .or_insert(serde_json::Value::Null);
+    let left_out = [
+        ("ndt_weight", serde_json::json!(1.0)),
+        ("parts", serde_json::json!([])),
+        (
+            "scale",
+            serde_json::to_value(Scale::Fixed).unwrap_or_default(),
+        ),
+        ("sensor_height", serde_json::Value::Null),
+    ];
+    for (key, usual) in left_out {
+        map.entry(key).or_insert(usual);
+    }
     map.iter()
         .map(|(k, v)| {
             let text = if v.is_null() {
@@ -687,6 +707,37 @@ mod tests {
             )),
             "{e}"
         );
+        // Fields JSON leaves out at their usual value (ndt_weight 1, no
+        // parts, fixed scale) are named too, not a neighbour of theirs.
+        let indoor = DescriptorParams::indoor();
+        let mut halved = indoor.clone();
+        halved.ndt_weight = 0.5;
+        let e = indoor
+            .check_made_with(&halved, "model")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("(ndt_weight: 0.5 against the expected 1.0)"),
+            "{e}"
+        );
+        let mut median = indoor.clone();
+        median.scale = Scale::Median;
+        let e = median
+            .check_made_with(&indoor, "model")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("(scale: \"fixed\" against the expected \"median\")"),
+            "{e}"
+        );
+        let mut with_parts = indoor.clone();
+        with_parts.parts = columns.parts.clone();
+        let e = indoor
+            .check_made_with(&with_parts, "collection")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("(parts: [{\"kind\":\"slice\""), "{e}");
+        assert!(e.contains("against the expected [])"), "{e}");
     }
 
     /// A saved model or collection compares its parameters exactly with a

@@ -292,8 +292,9 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     let typo = js_sys::JSON::parse(r#"{"voxel_sise": 2}"#).unwrap();
     assert!(message(validate_params(typo, None).err().unwrap()).contains("voxel_sise"));
     let (mut set, scans) = real_set();
-    // A descriptor of the outdoor preset's shape (5 ranges) into an indoor
-    // set (7), and one whose counts are cut short.
+    // A descriptor of the outdoor preset (5 ranges) into an indoor set (7):
+    // named as made with other parameters, the ranges, before its shape;
+    // and one whose counts are cut short.
     let outdoor = describe_scan(
         u8a(PARITY_FILES[0].1),
         "o.bin",
@@ -303,6 +304,17 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     )
     .unwrap();
     let e = message(set.add(&outdoor).err().unwrap());
+    assert!(
+        e.contains("o.bin: ")
+            && e.contains("other parameters than the collection's (ranges: [[5.0,8.0],"),
+        "{e}"
+    );
+    // Its bare JSON carries no parameters: refused by its shape.
+    let e = message(
+        set.add_json(&outdoor.descriptor_json().unwrap())
+            .err()
+            .unwrap(),
+    );
     assert!(
         e.contains("the descriptor is 11x5, the set's parameters make 11x7"),
         "{e}"
