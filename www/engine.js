@@ -246,6 +246,20 @@ export class Engine {
     return this.model.get('model').classifyJson(descriptorJson);
   }
 
+  /**
+   * Why the loaded model cannot classify descriptors made with `params`
+   * (the first parameter that differs), or null when it can.
+   * @param {Params} params @returns {string | null}
+   */
+  paramsRefusal(params) {
+    try {
+      this.model.get('model').checkMadeWith(params);
+      return null;
+    } catch (e) {
+      return /** @type {Error} */ (e).message;
+    }
+  }
+
   dispose() {
     this.tree.clear();
     this.set.clear();

@@ -12,10 +12,15 @@ import * as S from './state.js';
 export function importNames(s, engine, fileName, text) {
   if (fileName.toLowerCase().endsWith('.csv')) return { state: S.withNamesCsv(s, text), said: `Names imported from ${fileName}.` };
   const categories = engine.loadModel(text); // throws on anything malformed
-  // Name current categories after the model's, where unnamed.
-  const names = S.unnamed(s).map(([i, json]) => /** @type {[number, string]} */ ([i, engine.classifyJson(json).name]));
+  // Name current categories after the model's, where unnamed; but a model
+  // of other parameters would name them by descriptors it cannot compare
+  // (new scans it describes itself, with its own).
+  const unnamed = S.unnamed(s);
+  const refusal = unnamed.length && s.params ? engine.paramsRefusal(s.params) : null;
+  const names = refusal ? [] : unnamed.map(([i, json]) => /** @type {[number, string]} */ ([i, engine.classifyJson(json).name]));
+  const kept = refusal ? ` The categories here keep their names: this run's scans were described with other parameters (${refusal}).` : '';
   return {
     state: S.withNames(S.withModel(s, text), new Map(names)),
-    said: `Model loaded from ${fileName}: ${categories.map((c) => c.name).join(', ')}. New scans can be classified.`,
+    said: `Model loaded from ${fileName}: ${categories.map((c) => c.name).join(', ')}. New scans can be classified.${kept}`,
   };
 }

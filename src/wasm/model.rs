@@ -101,9 +101,23 @@ impl Model {
             .classify_made_with(&scan.descriptor, &scan.params);
         to_js(&c.map_err(|e| e.in_file(&scan.name))?)
     }
-    /// Classify a descriptor given as JSON text.
+    /// Classify a descriptor given as JSON text. The bare JSON carries no
+    /// parameters, so only its shape is checked: check the parameters it
+    /// was described with once with `checkMadeWith`.
     #[wasm_bindgen(js_name = classifyJson, unchecked_return_type = "Classification")]
     pub fn classify_json(&self, json: &str) -> WasmResult<JsValue> {
         to_js(&self.model.classify(&descriptor_from_json(json)?)?)
+    }
+    /// Throw unless scans described with `params` (a plain object, as the
+    /// set's constructor takes it) can be classified here: the model's
+    /// parameters, the preset's name aside. The message names the first
+    /// field that differs.
+    #[wasm_bindgen(js_name = checkMadeWith)]
+    pub fn check_made_with(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "DescriptorParams")] params: JsValue,
+    ) -> WasmResult<()> {
+        let made_with = params_from_js(params, None)?;
+        Ok(self.model.params.check_made_with(&made_with, "model")?)
     }
 }

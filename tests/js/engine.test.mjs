@@ -6,6 +6,8 @@ import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
 import { Engine, Describer, Slot, scoped } from '../../www/engine.js';
+import { importNames } from '../../www/imports.js';
+import * as S from '../../www/state.js';
 
 const wasm = createRequire(import.meta.url)('../../pkg/node/placecat.js');
 const PLAIN = new Set([Object.prototype, Array.prototype, Map.prototype, Int32Array.prototype, Float32Array.prototype, Float64Array.prototype, Uint32Array.prototype, Uint8Array.prototype]);
@@ -134,6 +136,38 @@ test('k-means, DBSCAN and the sweep return plain labels and points', () => {
     assert.throws(() => e.hkmeans(0, bad), RangeError, String(bad));
   }
   assert.throws(() => e.hkmeans(0, 1001), /restarts = 1001 is more than the limit of 1000 2-means runs per split/);
+  e.dispose();
+});
+
+test('a model of other parameters loads for new scans but names no category of this run', () => {
+  // Two runs of the same 10 scans: the indoor preset's and a coarser voxel
+  // (descriptors of the same shape, 11 x 7, that do not compare).
+  const coarse = { ...params, voxel_size: 1.2 };
+  const d = new Describer(wasm);
+  const coarseScans = scans.slice(0, 10).map((_, index) => d.simulate({ scene: 'indoor', seed: 1, scans: 8, index }, coarse, 500));
+  d.dispose();
+  const e = new Engine(wasm);
+  e.load(coarse, coarseScans.map((s) => s.descriptorJson));
+  const labels = Int32Array.from([0, 0, 0, 0, 0, 1, 1, 1, 1, 1]);
+  const coarseModel = e.modelJson(labels, [[0, 'hall'], [1, 'den']]);
+  // This run: the indoor preset's descriptors, two unnamed categories.
+  let s = S.initialState();
+  s = S.beginRun(s, { datasetId: 'sim', demo: null, inputs: [], anchors: {}, params });
+  s = S.finishRun(s, scans.slice(0, 10));
+  s = S.withSet(s, { size: 10, usesMatrix: true, matrixLimit: 5000 });
+  s = S.withLabels(s, labels, new Map([[0, 0], [1, 5]]));
+  const { state, said } = importNames(s, e, 'coarse.json', coarseModel);
+  assert.equal(state.modelJson, coarseModel, 'the model is loaded, for new scans');
+  assert.equal(S.unnamed(state).length, 2, 'no category named after it');
+  assert.match(said, /keep their names: this run's scans were described with other parameters \(.*voxel_size: 0\.4 against the expected 1\.2\)/);
+  assert.equal(e.paramsRefusal(coarse), null);
+  // A model of this run's parameters names them.
+  e.load(params, scans.slice(0, 10).map((s) => s.descriptorJson));
+  const own = importNames(s, e, 'own.json', e.modelJson(labels, [[0, 'hall'], [1, 'den']]));
+  assert.equal(S.unnamed(own.state).length, 0);
+  const named = own.state.categories.map((c) => S.nameOf(own.state, c));
+  assert.deepEqual(named, own.state.categories.map((c) => e.classifyJson(scans[c.medoid].descriptorJson).name));
+  assert.doesNotMatch(own.said, /keep their names/);
   e.dispose();
 });
 

@@ -347,6 +347,16 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
         e.contains("coarse.bin: ") && e.contains("the model's (voxel_size: 1.2"),
         "{e}"
     );
+    // The same check for descriptors given as bare JSON, on the parameters
+    // alone.
+    let coarse = js_sys::JSON::parse(r#"{"preset": "indoor", "voxel_size": 1.2}"#).unwrap();
+    let e = message(model.check_made_with(coarse).err().unwrap());
+    assert!(
+        e.contains("the model's (voxel_size: 1.2 against the expected 0.4)"),
+        "{e}"
+    );
+    let indoor = js_sys::JSON::parse(r#"{"preset": "indoor"}"#).unwrap();
+    assert!(model.check_made_with(indoor).is_ok());
     let json = scans[0].descriptor_json().unwrap();
     let cut = json.replacen(",0,", ",", 1);
     let e = message(set.add_json(&cut).err().unwrap());
