@@ -2,7 +2,7 @@
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices; and optional extra [`parts`] beside it (issue
 //! 18): [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`], [`m2dp`].
+//! [`clutter`], [`m2dp`], [`columns`], [`iron`].
 
 pub mod alignment;
 pub mod clutter;
@@ -11,6 +11,7 @@ pub mod directions;
 pub mod esf;
 pub mod height_range;
 pub mod histogram;
+pub mod iron;
 pub mod m2dp;
 pub mod ndt_grid;
 pub mod params;

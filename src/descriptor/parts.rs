@@ -8,16 +8,16 @@
 //! compares as the absolute difference of the feature over its range.
 //!
 //! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`], [`m2dp`], [`columns`].
+//! [`clutter`], [`m2dp`], [`columns`], [`iron`].
 
 use super::polar::PolarScan;
-use super::{clutter, columns, esf, height_range, m2dp, ring, slice};
+use super::{clutter, columns, esf, height_range, iron, m2dp, ring, slice};
 use crate::cloud::is_finite;
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::{Deserialize, Serialize};
 
 /// Most parts one descriptor may have (one of each kind).
-pub const MAX_PARTS: usize = 7;
+pub const MAX_PARTS: usize = 8;
 
 /// Which extra part.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -41,6 +41,10 @@ pub enum PartKind {
     /// What stands in each azimuth sector, from the floor up: top, extent
     /// and bottom of the room's contents ([`columns`]).
     Columns,
+    /// How the scan's planar NDT cells stand to each other: separations
+    /// and angles of nearby pairs (after IRON, Schmiedel et al. 2015;
+    /// [`iron`]).
+    Iron,
 }
 
 impl PartKind {
@@ -53,6 +57,7 @@ impl PartKind {
         PartKind::Clutter,
         PartKind::M2dp,
         PartKind::Columns,
+        PartKind::Iron,
     ];
 
     /// Position in [`PartKind::ALL`].
@@ -70,6 +75,7 @@ impl PartKind {
             PartKind::Clutter => &clutter::CHANNELS,
             PartKind::M2dp => &m2dp::CHANNELS,
             PartKind::Columns => &columns::CHANNELS,
+            PartKind::Iron => &iron::CHANNELS,
         }
     }
 
@@ -100,6 +106,7 @@ impl PartKind {
             PartKind::Clutter => clutter::describe_scan(scan),
             PartKind::M2dp => m2dp::describe(points),
             PartKind::Columns => columns::describe_scan(scan),
+            PartKind::Iron => iron::describe(points),
         };
         debug_assert_eq!(v.len(), self.len());
         v
@@ -130,6 +137,7 @@ pub fn describe_parts_with(
                 PartKind::HeightRange => height_range::describe(points),
                 PartKind::Esf => esf::describe(points),
                 PartKind::M2dp => m2dp::describe(points),
+                PartKind::Iron => iron::describe(points),
                 _ => kind.describe_scan(
                     scan.get_or_init(|| PolarScan::with_sensor_height(points, sensor_height)),
                 ),

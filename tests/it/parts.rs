@@ -181,9 +181,10 @@ fn bad_weights_are_refused_by_name() {
     p.parts.pop();
     p.parts[3].kind = PartKind::Slice;
     assert!(p.validate().unwrap_err().to_string().contains("twice"));
-    let e = serde_json::from_str::<DescriptorParams>(r#"{"parts":[{"kind":"iron","weight":1}]}"#)
+    // A kind placecat does not have (LiDAR Iris) is named in the error.
+    let e = serde_json::from_str::<DescriptorParams>(r#"{"parts":[{"kind":"iris","weight":1}]}"#)
         .unwrap_err();
-    assert!(e.to_string().contains("iron"), "{e}");
+    assert!(e.to_string().contains("iris"), "{e}");
 }
 
 /// A descriptor with parts and a model made from such descriptors read
@@ -400,7 +401,8 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
 /// larger x, y): 13 real files' slice and clutter parts changed, every
 /// other digest stayed. The columns part's 28 were added when it came
 /// (round 8), and the clutter part's room test moved into a function it
-/// shares with it: every other digest stayed.
+/// shares with it: every other digest stayed. The iron part's 28 were
+/// added when it came (round 12); every other digest stayed.
 /// With PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
 ///
 /// The digests pin exact f32 bits, and so the platform's `f32::hypot`,
