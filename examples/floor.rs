@@ -27,7 +27,6 @@ mod families;
 use families::*;
 #[path = "common/real.rs"]
 mod real;
-use real::real_table;
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
@@ -52,6 +51,11 @@ const FILES: RoundFiles = RoundFiles {
     dev: "floor-dev.json",
     report: "floor.json",
     md: "floor.md",
+};
+const TEXT: RoundText = RoundText {
+    example: "floor",
+    test_seeds: "391-395",
+    candidates_on: "; the candidates on the room families",
 };
 /// The candidates, in the order of the tables.
 const SENSOR_HEIGHT: &str = "columns, sensor's height";
@@ -156,30 +160,12 @@ fn render(r: &Report) -> Res<String> {
         "# The floor the robot knows: heights from the sensor's height (issue 18, tenth round)\n"
     )?;
     writeln!(o, "**Candidates.** With `\"sensor_height\": h` (m above the floor) the `clutter` and `columns` parts measure heights from a floor `h` below the sensor instead of each scan's own estimate (the 2nd percentile of height within 8 m). Two candidates on `indoor_columns`: the simulated sensor's nominal height (1.15 m, the middle of the 1.0-1.3 m the room families draw per scan; 0.3 and 1.8 m for those mounts), and the collection's floor (the 10th percentile of the set's own floor estimates, no input). The hypothesis, written in docs/seeds.md before any run: with 16 beams the floor is not seen in small rooms and the estimate lands 0.1-0.2 m up, on what stands in them.\n")?;
-    writeln!(o, "Regenerate with `cargo run --release --example floor -- --dev` (`{}`, {:.0} s) then `cargo run --release --example floor` (test seeds, this file and `{}`, {:.0} s; it refuses to run again once `{}` exists; `-- --render` renders this file from it). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, development seeds 1-6, test seeds 391-395; the candidates on the room families. Every method but stride k-means runs with clustering seeds 0-9 (mean; lowest tree: any single tree on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", FILES.dev, r.dev.seconds, FILES.report, r.test.seconds, FILES.report)?;
-    writeln!(o, "## What it shows\n\n{NOTES}\n")?;
-    writeln!(o, "## 1. Test seeds 391-395, each family's own sensor\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s == "own")?;
-    writeln!(o, "\n## 2. Test seeds 391-395, the other sensors\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s != "own")?;
-    writeln!(
-        o,
-        "\n## 3. Real scans: same-place retrieval (every preset of the round)\n"
-    )?;
-    real_table(&mut o, &r.real)?;
-    writeln!(
-        o,
-        "\n## 4. Development seeds 1-6, every sensor (looked at before the test run)\n"
-    )?;
-    family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
+    round_body(&mut o, r, &FILES, &TEXT, NOTES)?;
     Ok(o)
 }
 
 fn main() -> Res<()> {
-    let blocked = seeds::test_seeds()?;
-    if let Some(s) = FAMILY_DEV.iter().find(|s| blocked.contains(s)) {
-        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
-    }
+    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let presets = round_presets(&docs, &CANDIDATES)?;
     every_family_round(

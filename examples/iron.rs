@@ -26,7 +26,6 @@ mod families;
 use families::*;
 #[path = "common/real.rs"]
 mod real;
-use real::real_table;
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
@@ -51,6 +50,11 @@ const FILES: RoundFiles = RoundFiles {
     dev: "iron-dev.json",
     report: "iron.json",
     md: "iron.md",
+};
+const TEXT: RoundText = RoundText {
+    example: "iron",
+    test_seeds: "421-425",
+    candidates_on: "; the candidate on the room families",
 };
 /// The one candidate.
 const WITH_IRON: &str = "columns + iron";
@@ -127,33 +131,12 @@ fn render(r: &Report) -> Res<String> {
         "# IRON as a global part: how a scan's surfaces stand to each other (issue 18, twelfth round)\n"
     )?;
     writeln!(o, "**Candidate.** `indoor_columns` with the part `iron` added at weight {IRON_WEIGHT} (the weight `columns` has there; no preset): after IRON (Schmiedel, Einhorn and Gross, IROS 2015), whose keypoint descriptor is a histogram of neighbouring NDT cells by distance and by the angle between their normals; here every planar NDT cell (0.4 m) within 16 m is a keypoint and the histograms over pairs within 4 m are summed over the scan: the separation of parallel pairs, the angle between normals, the distance of perpendicular pairs (src/descriptor/iron.rs). The hypothesis and the decision rule, written in docs/seeds.md before any run: how a room's surfaces stand to each other changes less from one spot of a room to another than what is seen at each range (docs/kinds-dev.md found the confused kinds spread scan by scan), so the part makes those kinds more compact.\n")?;
-    writeln!(o, "Regenerate with `cargo run --release --example iron -- --dev` (`{}`, {:.0} s) then `cargo run --release --example iron` (test seeds, this file and `{}`, {:.0} s; it refuses to run again once `{}` exists; `-- --render` renders this file from it). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, development seeds 1-6, test seeds 421-425; the candidate on the room families. Every method but stride k-means runs with clustering seeds 0-9 (mean; lowest tree: any single tree on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", FILES.dev, r.dev.seconds, FILES.report, r.test.seconds, FILES.report)?;
-    writeln!(o, "## What it shows\n\n{NOTES}\n")?;
-    writeln!(o, "## 1. Test seeds 421-425, each family's own sensor\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s == "own")?;
-    writeln!(o, "\n## 2. Test seeds 421-425, the other sensors\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s != "own")?;
-    writeln!(
-        o,
-        "\n## 3. Real scans: same-place retrieval (every preset of the round)\n"
-    )?;
-    real_table(&mut o, &r.real)?;
-    writeln!(
-        o,
-        "\n## 4. Development seeds 1-6, every sensor (looked at before the test run)\n"
-    )?;
-    family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
+    round_body(&mut o, r, &FILES, &TEXT, NOTES)?;
     Ok(o)
 }
 
 fn main() -> Res<()> {
-    let blocked = seeds::test_seeds()?;
-    if let Some(s) = FAMILY_DEV.iter().find(|s| blocked.contains(s)) {
-        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
-    }
-    if let Some(s) = FAMILY_TEST.iter().find(|s| !blocked.contains(s)) {
-        return Err(format!("seed {s} is not a test seed of docs/seeds.md").into());
-    }
+    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let presets = round_presets(&docs, &CANDIDATES)?;
     every_family_round(

@@ -27,7 +27,6 @@ mod families;
 use families::*;
 #[path = "common/real.rs"]
 mod real;
-use real::real_table;
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
@@ -56,6 +55,11 @@ const FILES: RoundFiles = RoundFiles {
     dev: "scaled-dev.json",
     report: "scaled.json",
     md: "scaled.md",
+};
+const TEXT: RoundText = RoundText {
+    example: "scaled",
+    test_seeds: "381-385",
+    candidates_on: "",
 };
 
 /// A candidate: a name, and its parameters made from [`BASE`]'s (the
@@ -177,10 +181,7 @@ fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<
 /// every room family and sensor on the development seeds (mean over the
 /// seeds): what `Scale::Median` divides by.
 fn medians() -> Res<()> {
-    let blocked = seeds::test_seeds()?;
-    if let Some(s) = FAMILY_DEV.iter().find(|s| blocked.contains(s)) {
-        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
-    }
+    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
     let mut unit = DescriptorParams::indoor_columns();
     for part in &mut unit.parts {
         part.weight = 1.0;
@@ -226,22 +227,7 @@ fn render(r: &Report) -> Res<String> {
         "# Each term sized by its median: the scaled distance (issue 18, ninth round)\n"
     )?;
     writeln!(o, "**An option, no preset.** With `\"scale\": \"median\"` (src/distance/scale.rs) Delta and each part's distance are divided by their median over the collection's pairs of scans before the weights apply, so a weight is the term's share of a typical distance whatever the sensor; a model keeps the weights its scans gave. Two candidates on `indoor_columns`' descriptors: every term at weight 1 (equal shares), and `indoor_columns`' weights times each term's median on the office and school floors' own sensors (floors' shares: Delta 1, slice 0.586, ESF 0.172, ring 0.127, clutter 1.523, columns 1.973). The hypothesis, written in docs/seeds.md before any run: fewer beams change how far apart scans are in each term, so fixed weights give the parts other shares on other sensors.\n")?;
-    writeln!(o, "Regenerate with `cargo run --release --example scaled -- --dev` (`{}`, {:.0} s) then `cargo run --release --example scaled` (test seeds, this file and `{}`, {:.0} s; it refuses to run again once `{}` exists; `-- --render` renders this file from it). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, development seeds 1-6, test seeds 381-385. Every method but stride k-means runs with clustering seeds 0-9 (mean; lowest tree: any single tree on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", FILES.dev, r.dev.seconds, FILES.report, r.test.seconds, FILES.report)?;
-    writeln!(o, "## What it shows\n\n{NOTES}\n")?;
-    writeln!(o, "## 1. Test seeds 381-385, each family's own sensor\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s == "own")?;
-    writeln!(o, "\n## 2. Test seeds 381-385, the other sensors\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s != "own")?;
-    writeln!(
-        o,
-        "\n## 3. Real scans: same-place retrieval (every preset of the round)\n"
-    )?;
-    real_table(&mut o, &r.real)?;
-    writeln!(
-        o,
-        "\n## 4. Development seeds 1-6, every sensor (looked at before the test run)\n"
-    )?;
-    family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
+    round_body(&mut o, r, &FILES, &TEXT, NOTES)?;
     Ok(o)
 }
 

@@ -27,7 +27,6 @@ mod families;
 use families::*;
 #[path = "common/real.rs"]
 mod real;
-use real::real_table;
 #[path = "common/rounds.rs"]
 mod rounds;
 use rounds::*;
@@ -52,6 +51,11 @@ const FILES: RoundFiles = RoundFiles {
     dev: "true-floor-dev.json",
     report: "true-floor.json",
     md: "true-floor.md",
+};
+const TEXT: RoundText = RoundText {
+    example: "true_floor",
+    test_seeds: "411-415",
+    candidates_on: "; the candidate on the room families",
 };
 /// The one candidate.
 const TRUE_FLOOR: &str = "columns, true floor";
@@ -133,33 +137,12 @@ fn render(r: &Report) -> Res<String> {
         "# Each scan's true floor: does the floor's error explain the sparse sensors? (issue 18, eleventh round)\n"
     )?;
     writeln!(o, "**Candidate.** `indoor_columns` with `sensor_height` set, scan by scan, to that scan's true height above the floor (an oracle, no preset; what a robot with a fixed, known mount gives). `indoor_columns` itself measures the `clutter` and `columns` heights from each scan's own floor estimate (the 2nd percentile of height within 8 m). The hypothesis and the decision rule, written in docs/seeds.md before any run: where the sensor does not see the floor (16 and 32 beams), the true floor separates the confused kinds better.\n")?;
-    writeln!(o, "Regenerate with `cargo run --release --example true_floor -- --dev` (`{}`, {:.0} s) then `cargo run --release --example true_floor` (test seeds, this file and `{}`, {:.0} s; it refuses to run again once `{}` exists; `-- --render` renders this file from it). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, development seeds 1-6, test seeds 411-415; the candidate on the room families. Every method but stride k-means runs with clustering seeds 0-9 (mean; lowest tree: any single tree on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", FILES.dev, r.dev.seconds, FILES.report, r.test.seconds, FILES.report)?;
-    writeln!(o, "## What it shows\n\n{NOTES}\n")?;
-    writeln!(o, "## 1. Test seeds 411-415, each family's own sensor\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s == "own")?;
-    writeln!(o, "\n## 2. Test seeds 411-415, the other sensors\n")?;
-    family_table(&mut o, &r.presets, &r.test.families, |s| s != "own")?;
-    writeln!(
-        o,
-        "\n## 3. Real scans: same-place retrieval (every preset of the round)\n"
-    )?;
-    real_table(&mut o, &r.real)?;
-    writeln!(
-        o,
-        "\n## 4. Development seeds 1-6, every sensor (looked at before the test run)\n"
-    )?;
-    family_table(&mut o, &r.presets, &r.dev.families, |_| true)?;
+    round_body(&mut o, r, &FILES, &TEXT, NOTES)?;
     Ok(o)
 }
 
 fn main() -> Res<()> {
-    let blocked = seeds::test_seeds()?;
-    if let Some(s) = FAMILY_DEV.iter().find(|s| blocked.contains(s)) {
-        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
-    }
-    if let Some(s) = FAMILY_TEST.iter().find(|s| !blocked.contains(s)) {
-        return Err(format!("seed {s} is not a test seed of docs/seeds.md").into());
-    }
+    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let presets = round_presets(&docs, &CANDIDATES)?;
     every_family_round(

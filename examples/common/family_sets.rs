@@ -7,7 +7,7 @@
 
 use crate::families::{families, hospital_family, pct, Family, Sensor};
 use crate::preset_rounds::Figures;
-use crate::real::{real_rows, RealRow};
+use crate::real::{real_rows, real_table, RealRow};
 use crate::rounds::{each_row, every_set_of, lowest_over, mean_over, presets_of, target, Res};
 use crate::site_rounds::{round_main, RoundFiles};
 use serde::{Deserialize, Serialize};
@@ -133,6 +133,50 @@ pub fn every_family_round(
         },
         render,
     )
+}
+
+/// What a round over every family says of itself in its report (rounds
+/// 9-12).
+#[allow(dead_code)]
+pub struct RoundText {
+    /// The example that runs it (`cargo run --example NAME`).
+    pub example: &'static str,
+    /// Its test seeds, as the headings name them ("421-425").
+    pub test_seeds: &'static str,
+    /// Where its candidates run, after the families ("; the candidate on
+    /// the room families"), or nothing.
+    pub candidates_on: &'static str,
+}
+
+/// A round's report after its title and the words on its candidates: how
+/// to regenerate it, `notes`, the test seeds' tables (each family's own
+/// sensor, then the others), the real scans and the development seeds'
+/// table.
+#[allow(dead_code)]
+pub fn round_body(
+    o: &mut String,
+    r: &Report,
+    files: &RoundFiles,
+    t: &RoundText,
+    notes: &str,
+) -> Res<()> {
+    let (ex, seeds) = (t.example, t.test_seeds);
+    writeln!(o, "Regenerate with `cargo run --release --example {ex} -- --dev` (`{}`, {:.0} s) then `cargo run --release --example {ex}` (test seeds, this file and `{}`, {:.0} s; it refuses to run again once `{}` exists; `-- --render` renders this file from it). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, development seeds 1-6, test seeds {seeds}{}. Every method but stride k-means runs with clustering seeds 0-9 (mean; lowest tree: any single tree on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", files.dev, r.dev.seconds, files.report, r.test.seconds, files.report, t.candidates_on)?;
+    writeln!(o, "## What it shows\n\n{notes}\n")?;
+    writeln!(o, "## 1. Test seeds {seeds}, each family's own sensor\n")?;
+    family_table(o, &r.presets, &r.test.families, |s| s == "own")?;
+    writeln!(o, "\n## 2. Test seeds {seeds}, the other sensors\n")?;
+    family_table(o, &r.presets, &r.test.families, |s| s != "own")?;
+    writeln!(
+        o,
+        "\n## 3. Real scans: same-place retrieval (every preset of the round)\n"
+    )?;
+    real_table(o, &r.real)?;
+    writeln!(
+        o,
+        "\n## 4. Development seeds 1-6, every sensor (looked at before the test run)\n"
+    )?;
+    family_table(o, &r.presets, &r.dev.families, |_| true)
 }
 
 #[derive(Serialize, Deserialize, Clone)]

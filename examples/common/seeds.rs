@@ -48,6 +48,21 @@ pub fn test_seeds() -> Result<Vec<u64>, Box<dyn std::error::Error>> {
     Ok(seeds)
 }
 
+/// Refuse a round whose development seeds include a test seed of
+/// docs/seeds.md, or whose test seeds are not written there (a round's
+/// seeds are written down before its first run).
+#[allow(dead_code)] // rounds 9-12; the seeds guard test includes this file alone
+pub fn check_round_seeds(dev: &[u64], test: &[u64]) -> Result<(), Box<dyn std::error::Error>> {
+    let blocked = test_seeds()?;
+    if let Some(s) = dev.iter().find(|s| blocked.contains(s)) {
+        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
+    }
+    if let Some(s) = test.iter().find(|s| !blocked.contains(s)) {
+        return Err(format!("seed {s} is not a test seed of docs/seeds.md").into());
+    }
+    Ok(())
+}
+
 /// `text` without the words that begin with `docs/`.
 fn strip_paths(text: &str) -> String {
     text.split(' ')
