@@ -65,7 +65,27 @@ pub struct ScaledWeights {
     pub ndt_weight: f32,
     /// Each part kind's weight over its median, indexed by
     /// [`PartKind::index`](crate::descriptor::PartKind::index).
+    #[serde(deserialize_with = "part_weights_of_any_version")]
     pub part_weights: [f32; MAX_PARTS],
+}
+
+/// Part weights as a model file holds them: one per part kind of the
+/// version that wrote it. A model written before a kind was added (seven
+/// before `iron`) lists fewer, and those kinds weigh 0 in it; more than
+/// this version knows is an error.
+fn part_weights_of_any_version<'de, D: serde::Deserializer<'de>>(
+    d: D,
+) -> std::result::Result<[f32; MAX_PARTS], D::Error> {
+    let given = Vec::<f32>::deserialize(d)?;
+    if given.len() > MAX_PARTS {
+        return Err(serde::de::Error::custom(format!(
+            "{} part weights, but this version knows {MAX_PARTS} part kinds",
+            given.len()
+        )));
+    }
+    let mut weights = [0.0; MAX_PARTS];
+    weights[..given.len()].copy_from_slice(&given);
+    Ok(weights)
 }
 
 /// A model as read, before its checks.

@@ -3,6 +3,7 @@
 //! model compare with the weights the scans gave, and a model keeps them
 //! through JSON.
 
+use placecat::descriptor::parts::MAX_PARTS;
 use placecat::descriptor::{PartKind, Scale};
 use placecat::distance::Space;
 use placecat::model::LabelledModel;
@@ -132,6 +133,26 @@ fn a_scaled_model_keeps_the_weights_of_its_scans() {
         assert!(answer.relative.is_finite());
     }
     assert!(right >= 9, "{right} of 12 members in their own category");
+
+    // A model written before the `iron` part kind holds seven part
+    // weights: it loads, the new kind at 0, and is the same model; one of
+    // more kinds than this version knows is refused.
+    let mut v: serde_json::Value = serde_json::from_str(&model.to_json().unwrap()).unwrap();
+    let iron = PartKind::Iron.index();
+    assert_eq!(iron, MAX_PARTS - 1);
+    assert_eq!(
+        w.part_weights[iron], 0.0,
+        "no iron part in these parameters"
+    );
+    v["scaled_weights"]["part_weights"]
+        .as_array_mut()
+        .unwrap()
+        .truncate(MAX_PARTS - 1);
+    assert_eq!(LabelledModel::from_json(&v.to_string()).unwrap(), model);
+    let weights = v["scaled_weights"]["part_weights"].as_array_mut().unwrap();
+    weights.extend([1.0.into(), 1.0.into()]);
+    let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
+    assert!(e.to_string().contains("9 part weights"), "{e}");
 
     let mut v: serde_json::Value = serde_json::from_str(&model.to_json().unwrap()).unwrap();
     v.as_object_mut().unwrap().remove("scaled_weights");
