@@ -235,10 +235,7 @@ fn main() -> Res<()> {
     if std::env::args().any(|a| a == "--medians") {
         return medians();
     }
-    let blocked = seeds::test_seeds()?;
-    if let Some(s) = FAMILY_DEV.iter().find(|s| blocked.contains(s)) {
-        return Err(format!("seed {s} is a test seed (docs/seeds.md)").into());
-    }
+    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
     let presets = round_presets(&docs)?;
     every_family_round(

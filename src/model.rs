@@ -70,17 +70,18 @@ pub struct ScaledWeights {
 }
 
 /// Part weights as a model file holds them: one per part kind of the
-/// version that wrote it. A model written before a kind was added (seven
-/// before `iron`) lists fewer, and those kinds weigh 0 in it; more than
-/// this version knows is an error.
+/// version that wrote it. A model written before `iron` was added lists
+/// seven (the only count written before; the median scale came after
+/// `columns`), and `iron` weighs 0 in it; any other count is an error.
 fn part_weights_of_any_version<'de, D: serde::Deserializer<'de>>(
     d: D,
 ) -> std::result::Result<[f32; MAX_PARTS], D::Error> {
     let given = Vec::<f32>::deserialize(d)?;
-    if given.len() > MAX_PARTS {
+    if !(MAX_PARTS - 1..=MAX_PARTS).contains(&given.len()) {
         return Err(serde::de::Error::custom(format!(
-            "{} part weights, but this version knows {MAX_PARTS} part kinds",
-            given.len()
+            "{} part weights, but this version knows {MAX_PARTS} part kinds (or {} before iron)",
+            given.len(),
+            MAX_PARTS - 1
         )));
     }
     let mut weights = [0.0; MAX_PARTS];

@@ -135,8 +135,8 @@ fn a_scaled_model_keeps_the_weights_of_its_scans() {
     assert!(right >= 9, "{right} of 12 members in their own category");
 
     // A model written before the `iron` part kind holds seven part
-    // weights: it loads, the new kind at 0, and is the same model; one of
-    // more kinds than this version knows is refused.
+    // weights: it loads, the new kind at 0, and is the same model; more
+    // kinds than this version knows, or fewer than seven, are refused.
     let mut v: serde_json::Value = serde_json::from_str(&model.to_json().unwrap()).unwrap();
     let iron = PartKind::Iron.index();
     assert_eq!(iron, MAX_PARTS - 1);
@@ -153,6 +153,9 @@ fn a_scaled_model_keeps_the_weights_of_its_scans() {
     weights.extend([1.0.into(), 1.0.into()]);
     let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
     assert!(e.to_string().contains("9 part weights"), "{e}");
+    v["scaled_weights"]["part_weights"] = serde_json::json!([]);
+    let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
+    assert!(e.to_string().contains("0 part weights"), "{e}");
 
     let mut v: serde_json::Value = serde_json::from_str(&model.to_json().unwrap()).unwrap();
     v.as_object_mut().unwrap().remove("scaled_weights");
