@@ -48,23 +48,17 @@ fn to_js<T: Serialize + ?Sized>(v: &T) -> WasmResult<JsValue> {
 
 /// Parameters as the plain object the .d.ts promises
 /// (`Required<DescriptorParams>`): every key, those the core's JSON leaves
-/// out at their defaults (`ndt_weight` 1, no `parts`, `scale` fixed,
-/// `sensor_height` null; left
-/// out so that older descriptor and model files keep their bytes) included.
+/// out at their defaults (`DescriptorParams::fields_left_out_of_json`)
+/// included.
 /// They are the struct's last fields, so setting them where missing keeps
 /// the struct's order (the page shows the object as JSON, `preset` first).
 fn params_to_js(params: &DescriptorParams) -> WasmResult<JsValue> {
     let object = to_js(params)?;
     let not_an_object = |_| JsError::new("parameters: not a plain object");
-    for (key, value) in [
-        ("ndt_weight", to_js(&params.ndt_weight)?),
-        ("parts", to_js(&params.parts)?),
-        ("scale", to_js(&params.scale)?),
-        ("sensor_height", to_js(&params.sensor_height)?),
-    ] {
+    for (key, value) in params.fields_left_out_of_json() {
         let key = JsValue::from_str(key);
         if !js_sys::Reflect::has(&object, &key).map_err(not_an_object)? {
-            js_sys::Reflect::set(&object, &key, &value).map_err(not_an_object)?;
+            js_sys::Reflect::set(&object, &key, &to_js(&value)?).map_err(not_an_object)?;
         }
     }
     Ok(object)

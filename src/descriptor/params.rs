@@ -489,6 +489,23 @@ impl DescriptorParams {
         )))
     }
 
+    /// The fields JSON leaves out at their usual value (`ndt_weight` 1, no
+    /// `parts`, `scale` fixed, `sensor_height` unset; so that older
+    /// descriptor and model files keep their bytes), each with its value
+    /// here: for a comparison or a JS object that wants every key.
+    pub(crate) fn fields_left_out_of_json(&self) -> [(&'static str, serde_json::Value); 4] {
+        let value = |v: serde_json::Result<serde_json::Value>| v.unwrap_or_default();
+        [
+            ("ndt_weight", value(serde_json::to_value(self.ndt_weight))),
+            ("parts", value(serde_json::to_value(&self.parts))),
+            ("scale", value(serde_json::to_value(self.scale))),
+            (
+                "sensor_height",
+                value(serde_json::to_value(self.sensor_height)),
+            ),
+        ]
+    }
+
     fn same_but_preset(&self, other: &DescriptorParams) -> bool {
         let mut other = other.clone();
         other.preset.clone_from(&self.preset);
@@ -645,17 +662,8 @@ fn field_values(p: &DescriptorParams) -> BTreeMap<String, String> {
         return BTreeMap::new();
     };
     map.remove("preset");
-    let left_out = [
-        ("ndt_weight", serde_json::json!(1.0)),
-        ("parts", serde_json::json!([])),
-        (
-            "scale",
-            serde_json::to_value(Scale::Fixed).unwrap_or_default(),
-        ),
-        ("sensor_height", serde_json::Value::Null),
-    ];
-    for (key, usual) in left_out {
-        map.entry(key).or_insert(usual);
+    for (key, value) in p.fields_left_out_of_json() {
+        map.entry(key).or_insert(value);
     }
     map.iter()
         .map(|(k, v)| {
