@@ -182,8 +182,7 @@ fn one_set(f: &Family, sensor: Sensor, seed: u64) -> Res<SetOut> {
         let l: Vec<usize> = best(s)?.labels.iter().map(|&l| l as usize).collect();
         cheaper += usize::from(cost(&space, &centres(&space, &m, &l, k), &l) < truth_cost);
     }
-    let (drift, from_truth) = lloyd(&space, true_centres);
-    let drift: Vec<i32> = drift.iter().map(|&l| l as i32).collect();
+    let drift = KMeans::fit_from_centres(&space, true_centres, ITERATIONS)?;
 
     let (between, within_room, nearer_other) = kind_distances(&m, &kind, k, &set.apart);
     Ok(SetOut {
@@ -202,8 +201,8 @@ fn one_set(f: &Family, sensor: Sensor, seed: u64) -> Res<SetOut> {
             found: found_cost,
             found_own: found.cost,
             cheaper,
-            from_truth,
-            from_truth_accuracy: confusion(truth, &drift).accuracy,
+            from_truth: drift.cost,
+            from_truth_accuracy: confusion(truth, &drift.labels).accuracy,
         },
         between,
         within_room,
@@ -260,39 +259,6 @@ fn cost(space: &Space, centres: &[Centre], labels: &[usize]) -> f64 {
     (0..labels.len())
         .map(|i| space.to_centre(&centres[labels[i]], i).0 as f64)
         .sum()
-}
-
-/// Lloyd's iterations as the library's k-means runs them, from `centres`:
-/// the labels and cost it ends at. An empty cluster keeps its centre (the
-/// library moves it to the farthest scan; from the true centres none empties
-/// in practice, and the figure is a diagnostic).
-fn lloyd(space: &Space, mut centres: Vec<Centre>) -> (Vec<usize>, f64) {
-    let n = space.len();
-    let mut labels = vec![usize::MAX; n];
-    let mut total = 0.0;
-    for _ in 0..ITERATIONS {
-        let mut changed = false;
-        total = 0.0;
-        for (i, label) in labels.iter_mut().enumerate() {
-            // The first of equal centres, as the library's assignment.
-            let (best, d) = (centres.iter().enumerate())
-                .map(|(c, centre)| (c, space.to_centre(centre, i).0))
-                .fold((0, f32::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-            total += d as f64;
-            changed |= *label != best;
-            *label = best;
-        }
-        if !changed {
-            break;
-        }
-        for (c, centre) in centres.iter_mut().enumerate() {
-            let members: Vec<usize> = (0..n).filter(|&i| labels[i] == c).collect();
-            if let Some(next) = space.mean(&members, centre) {
-                *centre = next;
-            }
-        }
-    }
-    (labels, total)
 }
 
 /// The kinds of each cluster of `labels` holding at least a room's worth

@@ -143,7 +143,18 @@ pub(crate) fn seeds(
     }
 }
 
-/// k-means on a subset; labels are per position in `members`.
+/// Where Lloyd's iterations ended: labels per position in `members`, the
+/// rounds run, whether the last changed no label, and the cost (the sum of
+/// Delta from each member to its centre in the last assignment).
+pub(crate) struct Lloyd {
+    pub labels: Vec<usize>,
+    pub iterations: usize,
+    pub converged: bool,
+    pub cost: f64,
+}
+
+/// k-means on a subset: the seeds `seeding` picks, then [`iterate`]. The
+/// seeds are positions in `members`.
 pub(crate) fn fit_subset(
     space: &Space,
     members: &[usize],
@@ -151,12 +162,25 @@ pub(crate) fn fit_subset(
     seeding: Seeding,
     max_iterations: usize,
     r: &mut ChaCha8Rng,
-) -> (Vec<usize>, Vec<usize>, usize, bool, f64) {
+) -> (Lloyd, Vec<usize>) {
     let seed_pos = seeds(space, members, k, seeding, r);
-    let mut centres: Vec<Centre> = seed_pos
+    let centres: Vec<Centre> = seed_pos
         .iter()
         .map(|&s| space.centre_of(members[s]))
         .collect();
+    (iterate(space, members, centres, max_iterations), seed_pos)
+}
+
+/// Lloyd's iterations over `members` from the given centres (at least
+/// one): assign each member to its nearest centre (the first of equals),
+/// move each centre to its members' mean, until no label changes or
+/// `max_iterations` rounds have run.
+pub(crate) fn iterate(
+    space: &Space,
+    members: &[usize],
+    mut centres: Vec<Centre>,
+    max_iterations: usize,
+) -> Lloyd {
     let mut labels = vec![usize::MAX; members.len()];
     let mut converged = false;
     let mut iterations = 0;
@@ -202,7 +226,12 @@ pub(crate) fn fit_subset(
             }
         }
     }
-    (labels, seed_pos, iterations, converged, cost)
+    Lloyd {
+        labels,
+        iterations,
+        converged,
+        cost,
+    }
 }
 
 #[cfg(test)]

@@ -97,6 +97,24 @@ impl Space {
         (item.combined(ndt, &c.parts), candidate)
     }
 
+    /// An error unless `c` has the shape of this space's centres (as
+    /// [`Space::centre_of`] makes them): a centre of another space would be
+    /// compared element by element with matrices of another size.
+    pub(crate) fn check_centre(&self, c: &Centre, which: usize) -> Result<()> {
+        let Some(item) = self.items.first() else {
+            return Ok(());
+        };
+        let (matrix, parts) = (item.candidate(0).len(), item.parts.len());
+        if c.matrix.len() != matrix || c.parts.len() != parts {
+            return Err(crate::Error::InvalidParameter(format!(
+                "centre {which} has {} matrix values and {} part values; this space's centres have {matrix} and {parts}",
+                c.matrix.len(),
+                c.parts.len()
+            )));
+        }
+        Ok(())
+    }
+
     /// A centre at item i (its first candidate).
     pub fn centre_of(&self, i: usize) -> Centre {
         Centre {

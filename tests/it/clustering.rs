@@ -156,6 +156,75 @@ fn seeds_give_identical_results_and_parameters_are_checked() {
 }
 
 #[test]
+fn kmeans_from_given_centres_is_kmeans_from_its_seeds() {
+    let (ds, truth) = sim_set(4, 11);
+    let space = Space::new(&ds, DistanceOptions::default()).unwrap();
+    // Started at the stride seeds' scans, the iteration is stride k-means'
+    // own, to the last label and the cost's last bit.
+    let stride = KMeans::fit(&space, &KMeansParams::new(5).seeding(Seeding::Stride)).unwrap();
+    let centres = stride.seeds.iter().map(|&i| space.centre_of(i)).collect();
+    let from = KMeans::fit_from_centres(&space, centres, 100).unwrap();
+    assert_eq!(from.labels, stride.labels);
+    assert_eq!(from.cost.to_bits(), stride.cost.to_bits());
+    assert_eq!(
+        (from.iterations, from.converged),
+        (stride.iterations, stride.converged)
+    );
+    assert!(from.seeds.is_empty());
+    // One round: every scan to its nearest centre, nothing moved yet; the
+    // cost is the sum of those distances.
+    let two = vec![space.centre_of(0), space.centre_of(19)];
+    let once = KMeans::fit_from_centres(&space, two.clone(), 1).unwrap();
+    assert_eq!((once.iterations, once.converged), (1, false));
+    let nearest: Vec<(i32, f64)> = (0..space.len())
+        .map(|i| {
+            let (a, b) = (space.to_centre(&two[0], i).0, space.to_centre(&two[1], i).0);
+            if b < a {
+                (1, b as f64)
+            } else {
+                (0, a as f64)
+            }
+        })
+        .collect();
+    assert_eq!(once.labels, nearest.iter().map(|n| n.0).collect::<Vec<_>>());
+    let sum: f64 = nearest.iter().map(|n| n.1).sum();
+    assert!(
+        (once.cost - sum).abs() < 1e-9 * sum,
+        "{} against {sum}",
+        once.cost
+    );
+    // Started at each true kind's mean (four scans a kind, well apart in
+    // the simulator's indoor set), k-means keeps the kinds.
+    let mut kinds: Vec<&String> = truth.iter().collect();
+    kinds.sort();
+    kinds.dedup();
+    let centres: Vec<_> = kinds
+        .iter()
+        .map(|k| {
+            let members: Vec<usize> = (0..truth.len()).filter(|&i| &truth[i] == *k).collect();
+            space.mean(&members, &space.centre_of(members[0])).unwrap()
+        })
+        .collect();
+    let kept = KMeans::fit_from_centres(&space, centres, 100).unwrap();
+    assert_eq!(evaluate(&truth, &kept.labels).unwrap().accuracy, 1.0);
+    // Centres of another shape, none, too many, or no round: errors.
+    let mut wrong = space.centre_of(0);
+    wrong.matrix.pop();
+    let err = KMeans::fit_from_centres(&space, vec![space.centre_of(1), wrong], 100)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("centre 1 has"), "{err}");
+    assert!(KMeans::fit_from_centres(&space, vec![], 100).is_err());
+    let all: Vec<_> = (0..20).chain([0]).map(|i| space.centre_of(i)).collect();
+    assert!(KMeans::fit_from_centres(&space, all, 100)
+        .unwrap_err()
+        .to_string()
+        .contains("more than the 20"));
+    let err = KMeans::fit_from_centres(&space, vec![space.centre_of(0)], 0).unwrap_err();
+    assert!(err.to_string().contains("max_iterations"), "{err}");
+}
+
+#[test]
 fn tree_heights_are_diameters_and_cuts_follow_the_threshold() {
     let (ds, _) = sim_set(4, 12);
     let opts = DistanceOptions::default();

@@ -180,13 +180,14 @@ fn cheapest_split(
             params.max_iterations,
             r,
         )
+        .0
     };
-    let (mut labels, _, _, _, mut cost) = trial(r);
+    let mut kept = trial(r);
     for _ in 1..params.restarts {
-        let (other, _, _, _, other_cost) = trial(r);
-        if cheaper(other_cost, cost) {
-            (labels, cost) = (other, other_cost);
+        let other = trial(r);
+        if cheaper(other.cost, kept.cost) {
+            kept = other;
         }
     }
-    labels
+    kept.labels
 }

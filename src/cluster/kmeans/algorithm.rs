@@ -1,7 +1,7 @@
 use super::hyperparams::KMeansValidParams;
-use crate::cluster::lloyd::{cheaper, fit_subset};
+use crate::cluster::lloyd::{cheaper, check_iterations, check_k, fit_subset, iterate, Lloyd};
 use crate::cluster::ParamGuard;
-use crate::distance::Space;
+use crate::distance::{Centre, Space};
 use crate::error::Result;
 use crate::rng::rng_stream;
 use serde::{Deserialize, Serialize};
@@ -68,7 +68,7 @@ impl KMeans {
     ) -> Result<impl Iterator<Item = KMeansResult> + 'a> {
         let params = params.check()?;
         let all: Vec<usize> = (0..space.len()).collect();
-        crate::cluster::lloyd::check_k(params.k, all.len())?;
+        check_k(params.k, all.len())?;
         Ok((0..params.restarts).map(move |restart| Self::run(space, &all, &params, restart)))
     }
 
@@ -81,7 +81,7 @@ impl KMeans {
         restart: usize,
     ) -> KMeansResult {
         let mut r = rng_stream(params.seed, restart as u64);
-        let (labels, seeds, iterations, converged, cost) = fit_subset(
+        let (run, seeds) = fit_subset(
             space,
             all,
             params.k,
@@ -89,12 +89,39 @@ impl KMeans {
             params.max_iterations,
             &mut r,
         );
+        KMeansResult::of(run, seeds.iter().map(|&s| all[s]).collect(), restart)
+    }
+
+    /// Lloyd's iterations from the given centres instead of a seeding: one
+    /// cluster a centre, at most `max_iterations` rounds. For centres known
+    /// beforehand (a named model's, or each true category's mean to see
+    /// where k-means walks from the truth). The result's `seeds` is empty.
+    /// An empty cluster restarts at the scan farthest from its centre, as
+    /// in [`KMeans::fit`].
+    pub fn fit_from_centres(
+        space: &Space,
+        centres: Vec<Centre>,
+        max_iterations: usize,
+    ) -> Result<KMeansResult> {
+        check_iterations(max_iterations)?;
+        check_k(centres.len(), space.len())?;
+        for (which, c) in centres.iter().enumerate() {
+            space.check_centre(c, which)?;
+        }
+        let all: Vec<usize> = (0..space.len()).collect();
+        let run = iterate(space, &all, centres, max_iterations);
+        Ok(KMeansResult::of(run, Vec::new(), 0))
+    }
+}
+
+impl KMeansResult {
+    fn of(run: Lloyd, seeds: Vec<usize>, restart: usize) -> Self {
         KMeansResult {
-            labels: labels.into_iter().map(|l| l as i32).collect(),
-            seeds: seeds.iter().map(|&s| all[s]).collect(),
-            iterations,
-            converged,
-            cost,
+            labels: run.labels.into_iter().map(|l| l as i32).collect(),
+            seeds,
+            iterations: run.iterations,
+            converged: run.converged,
+            cost: run.cost,
             restart,
         }
     }
