@@ -34,11 +34,10 @@ use rounds::*;
 #[path = "common/site_rounds.rs"]
 mod site_rounds;
 use site_rounds::*;
-#[path = "common/preset_rounds.rs"]
-mod preset_rounds;
-use preset_rounds::*;
 #[path = "common/family_sets.rs"]
 mod family_sets;
+#[path = "common/preset_rounds.rs"]
+mod preset_rounds;
 use family_sets::*;
 
 /// Fixed in docs/seeds.md ("issue 18, eighth round") before any run.
@@ -69,22 +68,7 @@ fn round_presets(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
 
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
     let set = describe_set(f, sensor, seed, presets)?;
-    let mut out = vec![];
-    for (name, p, ds) in &set.presets {
-        let (figures, _, m, _) = measure(ds, p, &set.truth, set.kinds)?;
-        out.push((
-            name.clone(),
-            figures,
-            room_level_nn(&m, &set.truth, &set.apart),
-        ));
-    }
-    Ok(FamilySet {
-        family: f.name.into(),
-        sensor: sensor.name(),
-        seed,
-        scans: set.scans,
-        presets: out,
-    })
+    measured_set(f, sensor, seed, &set)
 }
 
 /// The fresh family on the test seeds, each of its sensors.

@@ -35,11 +35,10 @@ use rounds::*;
 #[path = "common/site_rounds.rs"]
 mod site_rounds;
 use site_rounds::*;
-#[path = "common/preset_rounds.rs"]
-mod preset_rounds;
-use preset_rounds::*;
 #[path = "common/family_sets.rs"]
 mod family_sets;
+#[path = "common/preset_rounds.rs"]
+mod preset_rounds;
 use family_sets::*;
 #[path = "common/seeds.rs"]
 mod seeds;
@@ -126,22 +125,7 @@ fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<
         }
         Ok(extra)
     })?;
-    let mut out = vec![];
-    for (name, p, ds) in &set.presets {
-        let (figures, _, m, _) = measure(ds, p, &set.truth, set.kinds)?;
-        out.push((
-            name.to_string(),
-            figures,
-            room_level_nn(&m, &set.truth, &set.apart),
-        ));
-    }
-    Ok(FamilySet {
-        family: f.name.into(),
-        sensor: sensor.name(),
-        seed,
-        scans: set.scans,
-        presets: out,
-    })
+    measured_set(f, sensor, seed, &set)
 }
 
 /// What the round showed, written after its one test run.

@@ -34,11 +34,10 @@ use rounds::*;
 #[path = "common/site_rounds.rs"]
 mod site_rounds;
 use site_rounds::*;
-#[path = "common/preset_rounds.rs"]
-mod preset_rounds;
-use preset_rounds::*;
 #[path = "common/family_sets.rs"]
 mod family_sets;
+#[path = "common/preset_rounds.rs"]
+mod preset_rounds;
 use family_sets::*;
 #[path = "common/seeds.rs"]
 mod seeds;
@@ -87,38 +86,7 @@ fn described(names: &[String]) -> Vec<String> {
 }
 
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
-    let wanted = presets.iter().any(|p| p == WITH_IRON);
-    let set = describe_set_with(f, sensor, seed, &described(presets), |_| {
-        Ok(if wanted {
-            vec![(WITH_IRON.to_string(), with_iron()?)]
-        } else {
-            vec![]
-        })
-    })?;
-    if wanted && !set.presets.iter().any(|p| p.0 == WITH_IRON) {
-        return Err(format!(
-            "{} {} seed {seed}: a scan could not be described with the candidate",
-            f.name,
-            sensor.name()
-        )
-        .into());
-    }
-    let mut out = vec![];
-    for (name, p, ds) in &set.presets {
-        let (figures, _, m, _) = measure(ds, p, &set.truth, set.kinds)?;
-        out.push((
-            name.to_string(),
-            figures,
-            room_level_nn(&m, &set.truth, &set.apart),
-        ));
-    }
-    Ok(FamilySet {
-        family: f.name.into(),
-        sensor: sensor.name(),
-        seed,
-        scans: set.scans,
-        presets: out,
-    })
+    candidate_set(f, sensor, seed, presets, &[(WITH_IRON, with_iron)])
 }
 
 /// What the round showed, written after its one test run.

@@ -6,10 +6,14 @@
 //! and `preset_rounds.rs`.
 
 use crate::families::{families, hospital_family, pct, Family, Sensor};
-use crate::preset_rounds::Figures;
+use crate::preset_rounds::{measure, Figures};
 use crate::real::{real_rows, real_table, RealRow};
-use crate::rounds::{each_row, every_set_of, lowest_over, mean_over, presets_of, target, Res};
+use crate::rounds::{
+    describe_set_with, each_row, every_set_of, lowest_over, mean_over, presets_of, room_level_nn,
+    target, DescribedSet, Res,
+};
 use crate::site_rounds::{round_main, RoundFiles};
+use placecat::descriptor::DescriptorParams;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::Path;
@@ -187,6 +191,71 @@ pub struct FamilySet {
     pub scans: usize,
     /// Each preset's clusterings and its room-level 1-NN.
     pub presets: Vec<(String, Figures, f64)>,
+}
+
+/// A round's candidate: its name and how its parameters are made.
+#[allow(dead_code)] // rounds 12 and 13
+pub type Candidate = (&'static str, fn() -> Res<DescriptorParams>);
+
+/// A set of a round with candidates (rounds 12 and 13): the set described
+/// with `presets` (the candidates among them made by `candidates`), and
+/// each one's figures and room-level 1-NN. A candidate that cannot describe
+/// every scan is an error naming the set.
+#[allow(dead_code)] // rounds 12 and 13
+pub fn candidate_set(
+    f: &Family,
+    sensor: Sensor,
+    seed: u64,
+    presets: &[String],
+    candidates: &[Candidate],
+) -> Res<FamilySet> {
+    let wanted: Vec<&Candidate> = (candidates.iter())
+        .filter(|c| presets.iter().any(|p| p == c.0))
+        .collect();
+    let others: Vec<String> = (presets.iter())
+        .filter(|p| !candidates.iter().any(|c| c.0 == p.as_str()))
+        .cloned()
+        .collect();
+    let set = describe_set_with(f, sensor, seed, &others, |_| {
+        wanted
+            .iter()
+            .map(|c| Ok((c.0.to_string(), (c.1)()?)))
+            .collect()
+    })?;
+    if let Some(c) = wanted
+        .iter()
+        .find(|c| !set.presets.iter().any(|p| p.0 == c.0))
+    {
+        return Err(format!(
+            "{} {} seed {seed}: a scan could not be described with {}",
+            f.name,
+            sensor.name(),
+            c.0
+        )
+        .into());
+    }
+    measured_set(f, sensor, seed, &set)
+}
+
+/// A described set's figures for each of its presets: the harness's
+/// clusterings and room-level 1-NN (rounds 8-13).
+pub fn measured_set(f: &Family, sensor: Sensor, seed: u64, set: &DescribedSet) -> Res<FamilySet> {
+    let mut out = vec![];
+    for (name, p, ds) in &set.presets {
+        let (figures, _, m, _) = measure(ds, p, &set.truth, set.kinds)?;
+        out.push((
+            name.to_string(),
+            figures,
+            room_level_nn(&m, &set.truth, &set.apart),
+        ));
+    }
+    Ok(FamilySet {
+        family: f.name.into(),
+        sensor: sensor.name(),
+        seed,
+        scans: set.scans,
+        presets: out,
+    })
 }
 
 /// A set's figures for preset `p`.
