@@ -158,7 +158,7 @@ pub type Preset = fn() -> DescriptorParams;
 
 /// Every parameter preset, by name: the one list. The CLI's help names
 /// them from here; a test holds the JS `Preset` type and the README to it.
-pub const PRESETS: [(&str, Preset); 12] = [
+pub const PRESETS: [(&str, Preset); 13] = [
     ("indoor", DescriptorParams::indoor),
     ("outdoor", DescriptorParams::outdoor),
     ("indoor_bands", DescriptorParams::indoor_bands),
@@ -171,11 +171,12 @@ pub const PRESETS: [(&str, Preset); 12] = [
     ("outdoor_hellinger", DescriptorParams::outdoor_hellinger),
     ("outdoor_near", DescriptorParams::outdoor_near),
     ("indoor_columns", DescriptorParams::indoor_columns),
+    ("indoor_searched", DescriptorParams::indoor_searched),
 ];
 
 /// One line per preset saying what it is for, in the order of [`PRESETS`]
 /// (the CLI's help, the page's menu and the wasm API show these).
-pub const PRESET_NOTES: [(&str, &str); 12] = [
+pub const PRESET_NOTES: [(&str, &str); 13] = [
     ("indoor", "the paper's indoor parameters (Tab. II)"),
     ("outdoor", "the paper's outdoor parameters (Tab. II)"),
     (
@@ -217,6 +218,10 @@ pub const PRESET_NOTES: [(&str, &str); 12] = [
     (
         "indoor_columns",
         "indoor_clutter, plus how high and over how many layers what stands in each direction reaches: room kinds of offices and schools (docs/columns.md)",
+    ),
+    (
+        "indoor_searched",
+        "indoor_columns' parts plus iron, weighted by a search on simulated rooms: room kinds on every sensor; worse on the office floor (docs/searched.md)",
     ),
 ];
 
@@ -422,6 +427,28 @@ impl DescriptorParams {
             weight: 5.0,
         });
         p
+    }
+
+    /// `indoor_columns`' parts and `iron`, with the weights a coordinate
+    /// search chose on simulated rooms (issue 18's thirteenth round, on
+    /// development seeds 1-3 only; docs/weights-dev.md): the shape
+    /// functions and how the scan's surfaces stand to each other weigh
+    /// more, the ring heights less. Made a preset in the fourteenth round,
+    /// after test seeds 431-435 (docs/searched.md), and judged on fresh
+    /// seeds (docs/seeds.md).
+    pub fn indoor_searched() -> Self {
+        DescriptorParams {
+            preset: "indoor_searched".into(),
+            parts: parts(&[
+                (PartKind::Slice, 4.0),
+                (PartKind::Esf, 32.0),
+                (PartKind::Ring, 1.0),
+                (PartKind::Clutter, 10.0),
+                (PartKind::Columns, 5.0),
+                (PartKind::Iron, 10.0),
+            ]),
+            ..Self::indoor()
+        }
     }
 
     /// The free-space slice and ring heights alone: the NDT histogram is

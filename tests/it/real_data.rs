@@ -87,6 +87,11 @@ fn nearest_scan_is_from_the_same_place_indoor_columns_preset() {
     check(DescriptorParams::indoor_columns());
 }
 
+#[test]
+fn nearest_scan_is_from_the_same_place_indoor_searched_preset() {
+    check(DescriptorParams::indoor_searched());
+}
+
 /// The presets whose slice and clutter parts changed when a sector's
 /// vertex among returns at the same range stopped depending on the points'
 /// order (the real files' quantised coordinates tie often): their
