@@ -22,26 +22,7 @@ use placecat::descriptor::{DescriptorParams, Part, PartKind};
 use std::fmt::Write;
 use std::path::Path;
 
-#[path = "common/families.rs"]
-mod families;
-use families::*;
-#[path = "common/real.rs"]
-mod real;
-#[path = "common/rounds.rs"]
-mod rounds;
-use rounds::*;
-// This round has no site: the shared site code goes unused here.
-#[allow(dead_code)]
-#[path = "common/site_rounds.rs"]
-mod site_rounds;
-use site_rounds::*;
-#[path = "common/family_sets.rs"]
-mod family_sets;
-#[path = "common/preset_rounds.rs"]
-mod preset_rounds;
-use family_sets::*;
-#[path = "common/seeds.rs"]
-mod seeds;
+include!("common/family_round.rs");
 
 /// Fixed in docs/seeds.md ("issue 18, thirteenth round") before any run.
 const FAMILY_DEV: &[u64] = &[1, 2, 3, 4, 5, 6];

@@ -1,0 +1,27 @@
+// The modules of a round over every family (rounds 9-14: scaled, floor,
+// true_floor, iron, searched, indoor_searched). Each of those examples
+// `include!`s this file at its root, so the modules name each other
+// `crate::families` and so on; the paths are relative to this file.
+#[path = "families.rs"]
+mod families;
+#[path = "real.rs"]
+mod real;
+#[path = "rounds.rs"]
+mod rounds;
+// These rounds have no site: the shared site code goes partly unused.
+#[allow(dead_code)]
+#[path = "site_rounds.rs"]
+mod site_rounds;
+#[path = "preset_rounds.rs"]
+mod preset_rounds;
+#[path = "family_sets.rs"]
+mod family_sets;
+#[path = "seeds.rs"]
+mod seeds;
+use families::*;
+use family_sets::*;
+// Only `scaled` reads the preset rounds' tables itself.
+#[allow(unused_imports)]
+use preset_rounds::*;
+use rounds::*;
+use site_rounds::*;
