@@ -221,7 +221,7 @@ pub const PRESET_NOTES: [(&str, &str); 13] = [
     ),
     (
         "indoor_searched",
-        "indoor_columns' parts plus iron, weighted by a search on simulated rooms: room kinds on every sensor; worse on the office floor (docs/searched.md)",
+        "indoor_columns' parts plus iron, weighted by a search on simulated rooms: room kinds on most sensors; on office floors indoor_columns did better (docs/indoor-searched.md)",
     ),
 ];
 
@@ -435,7 +435,8 @@ impl DescriptorParams {
     /// functions and how the scan's surfaces stand to each other weigh
     /// more, the ring heights less. Made a preset in the fourteenth round,
     /// after test seeds 431-435 (docs/searched.md), and judged on fresh
-    /// seeds (docs/seeds.md).
+    /// seeds 441-445 (docs/indoor-searched.md): above `indoor_columns` on
+    /// most room rows, below it on the office floor.
     pub fn indoor_searched() -> Self {
         DescriptorParams {
             preset: "indoor_searched".into(),
