@@ -35,7 +35,7 @@
 
 use super::ndt_grid;
 use super::parts::{empty_channels, soft_bin, unit_sum};
-use super::shape::{self, Shape};
+use super::shape::{self, Shape, ShapedCell};
 use rustc_hash::FxHashMap;
 
 /// Bins of each channel: parallel separation, normal angle, perpendicular
@@ -65,7 +65,27 @@ struct Plane {
 
 /// The three histograms, each of unit sum.
 pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
-    let planes = planes(points);
+    let grid = ndt_grid::build(points, VOXEL, MIN_POINTS);
+    let cells: Vec<ShapedCell> = (grid.cells.iter())
+        .filter(|c| within_range(&c.mean))
+        .filter_map(|c| shape::classify(c, EIGEN_THRESHOLD))
+        .collect();
+    describe_cells(&cells)
+}
+
+/// Whether an NDT grid of cell edge `voxel`, at least `min_points` a
+/// cell, classified with `eigen_threshold`, is the one this part builds:
+/// then [`describe_cells`] takes its cells and the grid is built once.
+pub(crate) fn shares_grid(voxel: f64, min_points: usize, eigen_threshold: f64) -> bool {
+    voxel == VOXEL && min_points == MIN_POINTS && eigen_threshold == EIGEN_THRESHOLD
+}
+
+/// [`describe`] from a scan's classified NDT cells in the grid's order,
+/// built with this part's settings ([`shares_grid`]): the NDT histogram's
+/// own cells when its parameters are the paper's indoor ones. The same
+/// values, bit for bit, as from the points (tests/it/parts.rs's digests).
+pub(crate) fn describe_cells(cells: &[ShapedCell]) -> Vec<f32> {
+    let planes = planes(cells);
     let [sb, ab, db] = CHANNELS;
     let (mut separation, mut angle, mut distance) =
         (vec![0f32; sb], vec![0f32; ab], vec![0f32; db]);
@@ -96,18 +116,19 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
 /// voxel). The grid sums its points in their order, so a shuffle can move
 /// the last bits of a mean or a normal: the part is not bit-identical
 /// under reordering, as `slice` or `ring` are.
-fn planes(points: &[[f32; 3]]) -> Vec<Plane> {
-    let grid = ndt_grid::build(points, VOXEL, MIN_POINTS);
-    grid.cells
-        .iter()
-        .filter(|c| c.mean[0].hypot(c.mean[1]) <= MAX_RANGE)
-        .filter_map(|c| shape::classify(c, EIGEN_THRESHOLD))
-        .filter(|s| s.shape == Shape::Planar)
+fn planes(cells: &[ShapedCell]) -> Vec<Plane> {
+    (cells.iter())
+        .filter(|s| s.shape == Shape::Planar && within_range(&s.mean))
         .map(|s| Plane {
             mean: s.mean,
             normal: s.normal,
         })
         .collect()
+}
+
+/// A cell mean within [`MAX_RANGE`] of the sensor, horizontally.
+fn within_range(mean: &[f64; 3]) -> bool {
+    mean[0].hypot(mean[1]) <= MAX_RANGE
 }
 
 /// Call `f` once for each pair of planes whose means lie within

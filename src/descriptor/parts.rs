@@ -11,6 +11,7 @@
 //! [`clutter`], [`m2dp`], [`columns`], [`iron`].
 
 use super::polar::PolarScan;
+use super::shape::ShapedCell;
 use super::{clutter, columns, esf, height_range, iron, m2dp, ring, slice};
 use crate::cloud::is_finite;
 use rustc_hash::{FxHashMap, FxHashSet};
@@ -129,6 +130,18 @@ pub fn describe_parts_with(
     kinds: &[PartKind],
     sensor_height: Option<f32>,
 ) -> Vec<Vec<f32>> {
+    describe_parts_sharing(points, kinds, sensor_height, None)
+}
+
+/// [`describe_parts_with`], the `iron` part from `ndt_cells` where given:
+/// the scan's classified NDT cells, built as that part builds them
+/// (`iron::shares_grid`), so that `describe` builds the grid once.
+pub(crate) fn describe_parts_sharing(
+    points: &[[f32; 3]],
+    kinds: &[PartKind],
+    sensor_height: Option<f32>,
+    ndt_cells: Option<&[ShapedCell]>,
+) -> Vec<Vec<f32>> {
     let scan = std::cell::OnceCell::new();
     kinds
         .iter()
@@ -137,7 +150,10 @@ pub fn describe_parts_with(
                 PartKind::HeightRange => height_range::describe(points),
                 PartKind::Esf => esf::describe(points),
                 PartKind::M2dp => m2dp::describe(points),
-                PartKind::Iron => iron::describe(points),
+                PartKind::Iron => match ndt_cells {
+                    Some(cells) => iron::describe_cells(cells),
+                    None => iron::describe(points),
+                },
                 _ => kind.describe_scan(
                     scan.get_or_init(|| PolarScan::with_sensor_height(points, sensor_height)),
                 ),

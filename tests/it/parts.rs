@@ -591,3 +591,49 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
         }
     }
 }
+
+/// `describe` hands the NDT histogram's cells to the `iron` part when its
+/// grid is the part's own (0.4 m, 5 points, eigen threshold 0.05: the
+/// paper's indoor values), so the grid is built once; with another grid
+/// the part builds its own. Either way its values are the part's alone,
+/// bit for bit (the digests above pin the shared path on 28 scans).
+#[test]
+fn the_iron_part_shares_the_histograms_grid_only_when_it_is_its_own() {
+    use placecat::sim::{SceneKind, SimParams, Simulation};
+    let mut p = SimParams::new(SceneKind::School, 2);
+    p.scans = 1;
+    let sim = Simulation::new(&p).unwrap();
+    let points = sim.scan(0).points;
+    let alone = PartKind::Iron.describe(&points);
+    let iron_of = |params: &DescriptorParams| {
+        let d = describe(&points, params).unwrap();
+        let part = d.parts.iter().find(|p| p.kind == PartKind::Iron).unwrap();
+        part.values.clone()
+    };
+    let shared = DescriptorParams::indoor_searched();
+    assert_eq!((shared.voxel_size, shared.min_points_per_voxel), (0.4, 5));
+    assert_eq!(shared.eigen_threshold, 0.05);
+    let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&iron_of(&shared)), bits(&alone));
+    for other in [
+        DescriptorParams {
+            voxel_size: 0.5,
+            ..shared.clone()
+        },
+        DescriptorParams {
+            min_points_per_voxel: 6,
+            ..shared.clone()
+        },
+        DescriptorParams {
+            eigen_threshold: 0.1,
+            ..shared.clone()
+        },
+    ] {
+        assert_eq!(bits(&iron_of(&other)), bits(&alone));
+    }
+    // The part is not trivially the same everywhere: another scan differs.
+    let mut p = SimParams::new(SceneKind::Hospital, 2);
+    p.scans = 1;
+    let other = Simulation::new(&p).unwrap().scan(0).points;
+    assert_ne!(bits(&PartKind::Iron.describe(&other)), bits(&alone));
+}
