@@ -206,6 +206,16 @@ fn describe_parts(c: &mut Criterion) {
                 b.iter(|| kind.describe(black_box(x)).len())
             });
         }
+        // Whole descriptors of the presets issue 18's last rounds read
+        // (the NDT histogram and every part, as `describe` makes them).
+        for preset in ["indoor_columns", "indoor_searched"] {
+            let params = DescriptorParams::preset(preset).unwrap();
+            g.bench_with_input(
+                BenchmarkId::new(format!("preset_{preset}"), label),
+                &pts,
+                |b, x| b.iter(|| describe(black_box(x), &params).unwrap().total()),
+            );
+        }
         // indoor_clutter's four parts: each on its own (slice, ring and
         // clutter each build their own PolarScan and polygon; esf none),
         // and sharing one (as `describe` does). The code before the
