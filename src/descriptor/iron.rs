@@ -193,6 +193,17 @@ mod tests {
         v
     }
 
+    /// The grid is shared with the paper's settings alone: any other cell
+    /// edge, point count or eigen threshold builds the part's own.
+    #[test]
+    fn the_grid_is_shared_only_with_the_parts_own_settings() {
+        assert!(shares_grid(0.4, 5, 0.05));
+        assert!(!shares_grid(0.5, 5, 0.05));
+        assert!(!shares_grid(0.4, 3, 0.05));
+        assert!(!shares_grid(0.4, 5, 0.1));
+        assert!(!shares_grid(0.4, 3, 0.02), "perception_oru's settings");
+    }
+
     /// Two parallel walls 1.5 m apart: the separation channel holds the
     /// pairs of one wall (0 m) and of the two walls (1.5 m), every angle is
     /// 0, and no pair is perpendicular.

@@ -98,8 +98,9 @@ impl Space {
     }
 
     /// An error unless `c` has the shape of this space's centres (as
-    /// [`Space::centre_of`] makes them): a centre of another space would be
-    /// compared element by element with matrices of another size.
+    /// [`Space::centre_of`] makes them; a centre of another space would be
+    /// compared element by element with matrices of another size), finite
+    /// values and a size above 0.
     pub(crate) fn check_centre(&self, c: &Centre, which: usize) -> Result<()> {
         let Some(item) = self.items.first() else {
             return Ok(());
@@ -110,6 +111,19 @@ impl Space {
                 "centre {which} has {} matrix values and {} part values; this space's centres have {matrix} and {parts}",
                 c.matrix.len(),
                 c.parts.len()
+            )));
+        }
+        // A NaN or infinite value, or a size of 0, would put every scan at
+        // an infinite or NaN distance and label them all alike.
+        if let Some(v) = (c.matrix.iter().chain(&c.parts)).find(|v| !v.is_finite()) {
+            return Err(crate::Error::InvalidParameter(format!(
+                "centre {which} holds the value {v}; a centre's values must be finite"
+            )));
+        }
+        if !(c.total.is_finite() && c.total > 0.0) {
+            return Err(crate::Error::InvalidParameter(format!(
+                "centre {which} has size (total) {}; it must be a finite number above 0",
+                c.total
             )));
         }
         Ok(())

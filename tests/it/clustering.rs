@@ -214,6 +214,20 @@ fn kmeans_from_given_centres_is_kmeans_from_its_seeds() {
         .unwrap_err()
         .to_string();
     assert!(err.contains("centre 1 has"), "{err}");
+    let mut nan = space.centre_of(0);
+    nan.matrix[3] = f32::NAN;
+    let err = KMeans::fit_from_centres(&space, vec![nan, space.centre_of(1)], 100).unwrap_err();
+    assert!(
+        err.to_string().contains("centre 0 holds the value NaN"),
+        "{err}"
+    );
+    let mut empty = space.centre_of(0);
+    empty.total = 0.0;
+    let err = KMeans::fit_from_centres(&space, vec![space.centre_of(1), empty], 100).unwrap_err();
+    assert!(
+        err.to_string().contains("centre 1 has size (total) 0"),
+        "{err}"
+    );
     assert!(KMeans::fit_from_centres(&space, vec![], 100).is_err());
     let all: Vec<_> = (0..20).chain([0]).map(|i| space.centre_of(i)).collect();
     assert!(KMeans::fit_from_centres(&space, all, 100)
