@@ -20,7 +20,6 @@ use placecat::descriptor::clutter::floor_and_ceiling;
 use placecat::descriptor::DescriptorParams;
 use placecat::sim::Simulation;
 use std::fmt::Write;
-use std::path::Path;
 
 include!("common/family_round.rs");
 
@@ -77,18 +76,9 @@ fn with_height(name: &str, height: f64) -> DescriptorParams {
     }
 }
 
-/// The presets to describe with: `names` but the candidates.
-fn described(names: &[String]) -> Vec<String> {
-    names
-        .iter()
-        .filter(|n| !CANDIDATES.contains(&n.as_str()))
-        .cloned()
-        .collect()
-}
-
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
     let wanted = |c: &str| presets.iter().any(|p| p == c);
-    let set = describe_set_with(f, sensor, seed, &described(presets), |sim| {
+    let set = describe_set_with(f, sensor, seed, &without(presets, &CANDIDATES), |sim| {
         let mut extra = vec![];
         if wanted(SENSOR_HEIGHT) {
             extra.push((
@@ -130,15 +120,12 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
-    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let presets = round_presets(&docs, &CANDIDATES)?;
-    every_family_round(
+    family_round(
         &FILES,
-        &presets,
         (FAMILY_DEV, FAMILY_TEST),
+        &CANDIDATES,
+        &CANDIDATES,
         family_set,
-        described,
         render,
     )
 }

@@ -18,7 +18,6 @@
 //! The test run refuses to overwrite its report.
 
 use std::fmt::Write;
-use std::path::Path;
 
 include!("common/family_round.rs");
 
@@ -36,11 +35,6 @@ const TEXT: RoundText = RoundText {
     candidates_on: "; `indoor_searched` on the room families",
 };
 const PRESET: &str = "indoor_searched";
-
-/// Every preset is a real one: all are described.
-fn described(names: &[String]) -> Vec<String> {
-    names.to_vec()
-}
 
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
     candidate_set(f, sensor, seed, presets, &[])
@@ -103,15 +97,12 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
-    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let presets = round_presets(&docs, &[PRESET])?;
-    every_family_round(
+    family_round(
         &FILES,
-        &presets,
         (FAMILY_DEV, FAMILY_TEST),
+        &[PRESET],
+        &[],
         family_set,
-        described,
         render,
     )
 }

@@ -19,7 +19,6 @@
 
 use placecat::descriptor::{DescriptorParams, Part, PartKind};
 use std::fmt::Write;
-use std::path::Path;
 
 include!("common/family_round.rs");
 
@@ -57,15 +56,6 @@ fn with_iron() -> Res<DescriptorParams> {
     Ok(p)
 }
 
-/// The presets to describe with: `names` but the candidate.
-fn described(names: &[String]) -> Vec<String> {
-    names
-        .iter()
-        .filter(|n| !CANDIDATES.contains(&n.as_str()))
-        .cloned()
-        .collect()
-}
-
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
     candidate_set(f, sensor, seed, presets, &[(WITH_IRON, with_iron)])
 }
@@ -91,15 +81,12 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
-    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let presets = round_presets(&docs, &CANDIDATES)?;
-    every_family_round(
+    family_round(
         &FILES,
-        &presets,
         (FAMILY_DEV, FAMILY_TEST),
+        &CANDIDATES,
+        &CANDIDATES,
         family_set,
-        described,
         render,
     )
 }

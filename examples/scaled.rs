@@ -98,7 +98,7 @@ const CANDIDATES: &[Candidate] = &[
 /// Each family's presets of rounds 2-3, `indoor_columns`, the outdoor
 /// family's `outdoor_near`, then the candidates; the hospital floors with
 /// the paper's, `indoor_clutter`, `indoor_columns` and the candidates.
-fn round_presets(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
+fn scaled_presets(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
     let mut presets = presets_of(docs)?;
     presets.push((
         hospital_family().name.to_string(),
@@ -116,17 +116,13 @@ fn round_presets(docs: &Path) -> Res<Vec<(String, Vec<String>)>> {
     Ok(presets)
 }
 
-/// The presets to describe with: `names` but the candidates.
-fn described(names: &[String]) -> Vec<String> {
-    names
-        .iter()
-        .filter(|n| !CANDIDATES.iter().any(|c| c.name == n.as_str()))
-        .cloned()
-        .collect()
+/// The candidates' names: no presets, so described by the round itself.
+fn candidate_names() -> Vec<&'static str> {
+    CANDIDATES.iter().map(|c| c.name).collect()
 }
 
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
-    let set = describe_set(f, sensor, seed, &described(presets))?;
+    let set = describe_set(f, sensor, seed, &without(presets, &candidate_names()))?;
     let mut out = vec![];
     let mut measured = |name: &str, p: &DescriptorParams, ds: &[placecat::Descriptor]| -> Res<()> {
         let (figures, _, m, _) = measure(ds, p, &set.truth, set.kinds)?;
@@ -217,13 +213,13 @@ fn main() -> Res<()> {
     }
     seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let presets = round_presets(&docs)?;
+    let presets = scaled_presets(&docs)?;
     every_family_round(
         &FILES,
         &presets,
         (FAMILY_DEV, FAMILY_TEST),
         family_set,
-        described,
+        &candidate_names(),
         render,
     )
 }

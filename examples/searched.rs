@@ -77,15 +77,6 @@ fn searched() -> Res<DescriptorParams> {
     Ok(p)
 }
 
-/// The presets to describe with: `names` but the candidate.
-fn described(names: &[String]) -> Vec<String> {
-    names
-        .iter()
-        .filter(|n| !CANDIDATES.contains(&n.as_str()))
-        .cloned()
-        .collect()
-}
-
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
     candidate_set(f, sensor, seed, presets, &[(SEARCHED, searched)])
 }
@@ -119,15 +110,12 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
-    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let presets = round_presets(&docs, &CANDIDATES)?;
-    every_family_round(
+    family_round(
         &FILES,
-        &presets,
         (FAMILY_DEV, FAMILY_TEST),
+        &CANDIDATES,
+        &CANDIDATES,
         family_set,
-        described,
         render,
     )
 }

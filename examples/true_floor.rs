@@ -20,7 +20,6 @@
 use placecat::descriptor::DescriptorParams;
 use placecat::sim::SimScan;
 use std::fmt::Write;
-use std::path::Path;
 
 include!("common/family_round.rs");
 
@@ -54,15 +53,6 @@ fn true_floor(base: &DescriptorParams, scan: &SimScan) -> DescriptorParams {
     }
 }
 
-/// The presets to describe with: `names` but the candidate.
-fn described(names: &[String]) -> Vec<String> {
-    names
-        .iter()
-        .filter(|n| !CANDIDATES.contains(&n.as_str()))
-        .cloned()
-        .collect()
-}
-
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {
     let per_scan: Vec<(String, DescriptorParams, PerScan)> =
         if presets.iter().any(|p| p == TRUE_FLOOR) {
@@ -74,7 +64,7 @@ fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<
         } else {
             vec![]
         };
-    let set = describe_set_per_scan(f, sensor, seed, &described(presets), &per_scan)?;
+    let set = describe_set_per_scan(f, sensor, seed, &without(presets, &CANDIDATES), &per_scan)?;
     if per_scan.len() == 1 && !set.presets.iter().any(|p| p.0 == TRUE_FLOOR) {
         return Err(format!(
             "{} {} seed {seed}: a scan's true floor was refused",
@@ -107,15 +97,12 @@ fn render(r: &Report) -> Res<String> {
 }
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(FAMILY_DEV, FAMILY_TEST)?;
-    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let presets = round_presets(&docs, &CANDIDATES)?;
-    every_family_round(
+    family_round(
         &FILES,
-        &presets,
         (FAMILY_DEV, FAMILY_TEST),
+        &CANDIDATES,
+        &CANDIDATES,
         family_set,
-        described,
         render,
     )
 }

@@ -25,3 +25,22 @@ use family_sets::*;
 use preset_rounds::*;
 use rounds::*;
 use site_rounds::*;
+
+/// A round over every family (rounds 10-14): its seeds checked against
+/// docs/seeds.md, `added` put after each room family's presets
+/// ([`round_presets`]), then [`every_family_round`], which leaves
+/// `candidates` (no presets) out of the real scans.
+#[allow(dead_code)] // `scaled` makes its presets itself
+fn family_round(
+    files: &RoundFiles,
+    (dev, test): (&[u64], &[u64]),
+    added: &[&str],
+    candidates: &[&str],
+    each: fn(&Family, Sensor, u64, &[String]) -> Res<FamilySet>,
+    render: fn(&Report) -> Res<String>,
+) -> Res<()> {
+    seeds::check_round_seeds(dev, test)?;
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let presets = round_presets(&docs, added)?;
+    every_family_round(files, &presets, (dev, test), each, candidates, render)
+}

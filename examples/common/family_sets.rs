@@ -96,15 +96,15 @@ fn run_families(
 
 /// The main of a round over every family ([`round_main`]): `--dev` on
 /// `dev_seeds`; else `test_seeds`, once, and the real scans with the
-/// presets that `described` keeps of each family's (the candidates are
-/// no presets).
-#[allow(dead_code)] // rounds 9 and 10
+/// presets of each family but `candidates` (the candidates are no
+/// presets).
+#[allow(dead_code)] // rounds 9-14
 pub fn every_family_round(
     files: &RoundFiles,
     presets: &[(String, Vec<String>)],
     (dev_seeds, test_seeds): (&[u64], &[u64]),
     each: fn(&Family, Sensor, u64, &[String]) -> Res<FamilySet>,
-    described: fn(&[String]) -> Vec<String>,
+    candidates: &[&str],
     render: fn(&Report) -> Res<String>,
 ) -> Res<()> {
     round_main(
@@ -126,7 +126,7 @@ pub fn every_family_round(
             let test = run_families(presets, test_seeds, "test", each)?;
             let kept: Vec<(String, Vec<String>)> = presets
                 .iter()
-                .map(|(f, n)| (f.clone(), described(n)))
+                .map(|(f, n)| (f.clone(), without(n, candidates)))
                 .collect();
             Ok(Report {
                 presets: presets.to_vec(),
@@ -193,6 +193,16 @@ pub struct FamilySet {
     pub presets: Vec<(String, Figures, f64)>,
 }
 
+/// `names` but the `candidates` among them: the presets a round describes
+/// as they are (a candidate is made by the round, not by its name).
+#[allow(dead_code)] // rounds 9-14
+pub fn without(names: &[String], candidates: &[&str]) -> Vec<String> {
+    (names.iter())
+        .filter(|n| !candidates.contains(&n.as_str()))
+        .cloned()
+        .collect()
+}
+
 /// A round's candidate: its name and how its parameters are made.
 #[allow(dead_code)] // rounds 12 and 13
 pub type Candidate = (&'static str, fn() -> Res<DescriptorParams>);
@@ -212,10 +222,8 @@ pub fn candidate_set(
     let wanted: Vec<&Candidate> = (candidates.iter())
         .filter(|c| presets.iter().any(|p| p == c.0))
         .collect();
-    let others: Vec<String> = (presets.iter())
-        .filter(|p| !candidates.iter().any(|c| c.0 == p.as_str()))
-        .cloned()
-        .collect();
+    let names: Vec<&str> = candidates.iter().map(|c| c.0).collect();
+    let others = without(presets, &names);
     let set = describe_set_with(f, sensor, seed, &others, |_| {
         wanted
             .iter()
