@@ -200,8 +200,7 @@ fn describe_parts(c: &mut Criterion) {
             b.iter(|| describe(x, &p).unwrap().total())
         });
         for kind in PartKind::ALL {
-            let name = serde_json::to_value(kind).unwrap();
-            let id = name.as_str().unwrap().to_string();
+            let id = kind.name();
             g.bench_with_input(BenchmarkId::new(id, label), &pts, |b, x| {
                 b.iter(|| kind.describe(black_box(x)).len())
             });

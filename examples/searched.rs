@@ -94,11 +94,7 @@ fn render(r: &Report) -> Res<String> {
     let mut o = String::new();
     let p = searched()?;
     let weights: Vec<String> = std::iter::once(format!("the NDT histogram {}", p.ndt_weight))
-        .chain(p.parts.iter().map(|part| {
-            let name = serde_json::to_value(part.kind).ok();
-            let name = name.as_ref().and_then(|v| v.as_str()).unwrap_or("?");
-            format!("{name} {}", part.weight)
-        }))
+        .chain((p.parts.iter()).map(|part| format!("{} {}", part.kind.name(), part.weight)))
         .collect();
     writeln!(
         o,

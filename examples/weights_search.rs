@@ -141,15 +141,14 @@ fn main() -> Res<()> {
                     sensor.name(),
                     t0.elapsed().as_secs_f64()
                 );
-                sets.push(describe_all_parts(f, sensor, seed)?);
+                // The first set is also described with `BASE` itself.
+                let check = sets.is_empty();
+                sets.push(describe_all_parts(f, sensor, seed, check)?);
             }
         }
     }
     let described = t0.elapsed().as_secs_f64();
     let base = weights_of(&DescriptorParams::preset(BASE)?);
-    // The weights alone make the preset's distance: the same matrix as the
-    // preset's own descriptors give.
-    check_same_distance(&sets[0], &base)?;
 
     let search: Vec<&Set> = (sets.iter())
         .filter(|s| SEARCH_SEEDS.contains(&s.seed))
@@ -300,18 +299,24 @@ fn all_parts() -> Res<DescriptorParams> {
     Ok(p)
 }
 
-fn describe_all_parts(f: &Family, sensor: Sensor, seed: u64) -> Res<Set> {
+/// With `check`, the same simulation is also described with `BASE`
+/// itself, and the search refused unless `BASE`'s weights over every
+/// part's descriptors give the Delta matrix of `BASE`'s own descriptors:
+/// then a weighting is the distance of a preset with those weights.
+fn describe_all_parts(f: &Family, sensor: Sensor, seed: u64, check: bool) -> Res<Set> {
     let params = all_parts()?;
     let p = params.clone();
-    let mut set = describe_set_with(f, sensor, seed, &[], |_| Ok(vec![(p.preset.clone(), p)]))?;
-    let (_, _, descriptors) = set.presets.pop().ok_or_else(|| {
+    let base: Vec<String> = if check { vec![BASE.into()] } else { vec![] };
+    let mut set = describe_set_with(f, sensor, seed, &base, |_| Ok(vec![(p.preset.clone(), p)]))?;
+    let all = (set.presets.iter()).position(|d| d.0 == params.preset);
+    let (_, _, descriptors) = all.map(|i| set.presets.remove(i)).ok_or_else(|| {
         format!(
             "{} {} seed {seed}: a scan could not be described",
             f.name,
             sensor.name()
         )
     })?;
-    Ok(Set {
+    let out = Set {
         family: f.name,
         sensor: sensor.name(),
         seed,
@@ -320,7 +325,18 @@ fn describe_all_parts(f: &Family, sensor: Sensor, seed: u64) -> Res<Set> {
         apart: set.apart,
         params,
         descriptors,
-    })
+    };
+    if check {
+        let (_, p, ds) = (set.presets.first()).ok_or("the preset described nothing")?;
+        let theirs = Space::new(ds, DistanceOptions::from(p))?.matrix();
+        let ours = space(&out, &weights_of(p))?.matrix();
+        if theirs.data != ours.data {
+            return Err(
+                format!("{BASE}'s weights over every part differ from {BASE} itself").into(),
+            );
+        }
+    }
+    Ok(out)
 }
 
 /// A preset's weights in the order of [`WEIGHTS`].
@@ -336,10 +352,7 @@ fn weight_name(c: usize) -> String {
     if c == 0 {
         return "ndt_histogram".into();
     }
-    serde_json::to_value(PartKind::ALL[c - 1])
-        .ok()
-        .and_then(|v| v.as_str().map(String::from))
-        .unwrap_or_else(|| format!("part {c}"))
+    PartKind::ALL[c - 1].name().into()
 }
 
 fn space(s: &Set, w: &[f32; WEIGHTS]) -> placecat::Result<Space> {
@@ -384,26 +397,6 @@ fn full(s: &Set, w: &[f32; WEIGHTS]) -> placecat::Result<Figures> {
         best_of_10: best.iter().map(|a| a / CLUSTER_SEEDS as f64).sum(),
         nn: room_level_nn(&sp.matrix(), &s.truth, &s.apart),
     })
-}
-
-/// Refuse to search if `BASE`'s weights over every part's descriptors do
-/// not give the Delta matrix of `BASE`'s own descriptors.
-fn check_same_distance(s: &Set, base: &[f32; WEIGHTS]) -> Res<()> {
-    let f = (families().into_iter().chain([hospital_family()]))
-        .find(|f| f.name == s.family)
-        .ok_or("no family")?;
-    let sensor = std::iter::once(Sensor::Own)
-        .chain(f.sensors.iter().copied())
-        .find(|x| x.name() == s.sensor)
-        .ok_or("no sensor")?;
-    let own = describe_set(&f, sensor, s.seed, &[BASE.to_string()])?;
-    let (_, p, ds) = own.presets.first().ok_or("the preset described nothing")?;
-    let theirs = Space::new(ds, DistanceOptions::from(p))?.matrix();
-    let ours = space(s, base)?.matrix();
-    if theirs.data != ours.data {
-        return Err(format!("{BASE}'s weights over every part differ from {BASE} itself").into());
-    }
-    Ok(())
 }
 
 fn render(o: &Out, described: f64) -> Res<String> {

@@ -66,6 +66,20 @@ impl PartKind {
         self as usize
     }
 
+    /// The kind's name, as in JSON (`"height_range"`, `"iron"`, ...).
+    pub fn name(self) -> &'static str {
+        match self {
+            PartKind::HeightRange => "height_range",
+            PartKind::Slice => "slice",
+            PartKind::Esf => "esf",
+            PartKind::Ring => "ring",
+            PartKind::Clutter => "clutter",
+            PartKind::M2dp => "m2dp",
+            PartKind::Columns => "columns",
+            PartKind::Iron => "iron",
+        }
+    }
+
     /// Bins of each channel.
     pub fn channels(self) -> &'static [usize] {
         match self {
@@ -357,6 +371,13 @@ mod tests {
     use super::*;
 
     /// Soft binning makes the EMD of two scalars their distance in bins.
+    #[test]
+    fn a_kinds_name_is_its_json_name() {
+        for kind in PartKind::ALL {
+            assert_eq!(serde_json::to_value(kind).unwrap(), kind.name());
+        }
+    }
+
     #[test]
     fn soft_binned_scalars_compare_as_their_difference() {
         let pv = |x: f64| PartValues {
