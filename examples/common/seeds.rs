@@ -63,6 +63,21 @@ pub fn check_round_seeds(dev: &[u64], test: &[u64]) -> Result<(), Box<dyn std::e
     Ok(())
 }
 
+/// Refuse seen seeds that a round uses for development unless each is a
+/// test seed of docs/seeds.md already (seen, so no longer judging) and
+/// none is among the round's own test seeds.
+#[allow(dead_code)] // the fifteenth round (rooms_search.rs)
+pub fn check_seen(seen: &[u64], test: &[u64]) -> Result<(), Box<dyn std::error::Error>> {
+    let written = test_seeds()?;
+    if let Some(s) = seen
+        .iter()
+        .find(|s| !written.contains(s) || test.contains(s))
+    {
+        return Err(format!("seed {s} is not a seen test seed of docs/seeds.md").into());
+    }
+    Ok(())
+}
+
 /// `text` without the words that begin with `docs/`.
 fn strip_paths(text: &str) -> String {
     text.split(' ')
