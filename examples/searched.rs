@@ -18,9 +18,8 @@
 //! lowest), and room-level 1-NN. The test run refuses to overwrite its
 //! report.
 
-use placecat::descriptor::{DescriptorParams, Part, PartKind};
+use placecat::descriptor::DescriptorParams;
 use std::fmt::Write;
-use std::path::Path;
 
 include!("common/family_round.rs");
 
@@ -43,38 +42,9 @@ const CANDIDATES: [&str; 1] = [SEARCHED];
 /// The search's output, which names the weights.
 const SEARCH: &str = "weights-dev.json";
 
-/// `indoor_columns`' parameters with the weights the search found: the NDT
-/// histogram's, then one per part kind in `PartKind::ALL`'s order (a kind
-/// of weight 0 is left out).
+/// `indoor_columns`' parameters with the weights the search found.
 fn searched() -> Res<DescriptorParams> {
-    #[derive(serde::Deserialize)]
-    struct Search {
-        found_weights: Vec<f32>,
-    }
-    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
-    let w = read_json::<Search>(&docs.join(SEARCH))?.found_weights;
-    if w.len() != 1 + PartKind::ALL.len() {
-        return Err(format!(
-            "docs/{SEARCH}: {} weights, not {}",
-            w.len(),
-            1 + PartKind::ALL.len()
-        )
-        .into());
-    }
-    let mut p = DescriptorParams {
-        preset: SEARCHED.into(),
-        ndt_weight: f64::from(w[0]),
-        ..DescriptorParams::preset(BASE)?
-    };
-    p.parts = (PartKind::ALL.iter().zip(&w[1..]))
-        .filter(|(_, &weight)| weight > 0.0)
-        .map(|(&kind, &weight)| Part {
-            kind,
-            weight: f64::from(weight),
-        })
-        .collect();
-    p.validate()?;
-    Ok(p)
+    searched_weights(SEARCHED, SEARCH, BASE)
 }
 
 fn family_set(f: &Family, sensor: Sensor, seed: u64, presets: &[String]) -> Res<FamilySet> {

@@ -1,6 +1,6 @@
-// The modules of a round over every family (rounds 9-14: scaled, floor,
-// true_floor, iron, searched, indoor_searched). Each of those examples
-// `include!`s this file at its root, so the modules name each other
+// The modules of a round over every family (rounds 9-15: scaled, floor,
+// true_floor, iron, searched, indoor_searched, rooms_searched). Each of
+// those examples `include!`s this file at its root, so the modules name each other
 // `crate::families` and so on; the paths are relative to this file.
 #[path = "families.rs"]
 mod families;

@@ -207,6 +207,43 @@ pub fn without(names: &[String], candidates: &[&str]) -> Vec<String> {
 #[allow(dead_code)] // rounds 12 and 13
 pub type Candidate = (&'static str, fn() -> Res<DescriptorParams>);
 
+/// A candidate made of searched weights (rounds 13 and 15): `base`'s
+/// parameters named `name`, with the weights docs/`file` found (its
+/// `found_weights`: the NDT histogram's, then one per part kind in
+/// `PartKind::ALL`'s order; a kind of weight 0 is left out).
+#[allow(dead_code)] // rounds 13 and 15
+pub fn searched_weights(name: &str, file: &str, base: &str) -> Res<DescriptorParams> {
+    use placecat::descriptor::{Part, PartKind};
+    #[derive(Deserialize)]
+    struct Search {
+        found_weights: Vec<f32>,
+    }
+    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let w = crate::families::read_json::<Search>(&docs.join(file))?.found_weights;
+    if w.len() != 1 + PartKind::ALL.len() {
+        return Err(format!(
+            "docs/{file}: {} weights, not {}",
+            w.len(),
+            1 + PartKind::ALL.len()
+        )
+        .into());
+    }
+    let mut p = DescriptorParams {
+        preset: name.into(),
+        ndt_weight: f64::from(w[0]),
+        ..DescriptorParams::preset(base)?
+    };
+    p.parts = (PartKind::ALL.iter().zip(&w[1..]))
+        .filter(|(_, &weight)| weight > 0.0)
+        .map(|(&kind, &weight)| Part {
+            kind,
+            weight: f64::from(weight),
+        })
+        .collect();
+    p.validate()?;
+    Ok(p)
+}
+
 /// A set of a round with candidates (rounds 12 and 13): the set described
 /// with `presets` (the candidates among them made by `candidates`), and
 /// each one's figures and room-level 1-NN. A candidate that cannot describe
