@@ -13,17 +13,8 @@ use placecat::cluster::*;
 use placecat::*;
 use std::fmt::Write;
 
-#[path = "common/families.rs"]
-mod families;
-use families::*;
-#[allow(dead_code)]
-#[path = "common/rounds.rs"]
-mod rounds;
-use rounds::*;
-#[path = "common/seeds.rs"]
-mod seeds;
+include!("common/dev_look.rs");
 
-const DEV_SEEDS: &[u64] = &[1, 2, 3, 4, 5, 6];
 const PRESETS: [&str; 3] = ["indoor", "indoor_columns", "indoor_searched"];
 const SENSORS: [Sensor; 5] = [
     Sensor::Own,

@@ -15,17 +15,8 @@ use placecat::*;
 use rayon::prelude::*;
 use std::fmt::Write;
 
-#[path = "common/families.rs"]
-mod families;
-use families::*;
-#[allow(dead_code)]
-#[path = "common/rounds.rs"]
-mod rounds;
-use rounds::*;
-#[path = "common/seeds.rs"]
-mod seeds;
+include!("common/dev_look.rs");
 
-const DEV_SEEDS: &[u64] = &[1, 2, 3, 4, 5, 6];
 const PRESET: &str = "indoor_searched";
 const MAX_ITERATIONS: usize = 100;
 
@@ -40,32 +31,29 @@ struct Row {
 fn main() -> Res<()> {
     seeds::check_round_seeds(DEV_SEEDS, &[])?;
     let t0 = std::time::Instant::now();
-    let all: Vec<Family> = families().into_iter().chain([hospital_family()]).collect();
     let mut rows = vec![];
-    for f in all.iter().filter(|f| f.scans_per_room > 1) {
-        for sensor in std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()) {
-            let per_seed: Vec<[f64; 4]> = DEV_SEEDS
-                .iter()
-                .map(|&seed| one_set(f, sensor, seed))
-                .collect::<Res<_>>()?;
-            let mut figures = [0.0; 4];
-            for s in &per_seed {
-                for (m, x) in figures.iter_mut().zip(s) {
-                    *m += x / per_seed.len() as f64;
-                }
+    for (f, sensor) in room_rows() {
+        let per_seed: Vec<[f64; 4]> = DEV_SEEDS
+            .iter()
+            .map(|&seed| one_set(&f, sensor, seed))
+            .collect::<Res<_>>()?;
+        let mut figures = [0.0; 4];
+        for s in &per_seed {
+            for (m, x) in figures.iter_mut().zip(s) {
+                *m += x / per_seed.len() as f64;
             }
-            eprintln!(
-                "{} {}: {figures:?} ({:.0} s)",
-                f.name,
-                sensor.name(),
-                t0.elapsed().as_secs_f64()
-            );
-            rows.push(Row {
-                family: f.name,
-                sensor: sensor.name(),
-                figures,
-            });
         }
+        eprintln!(
+            "{} {}: {figures:?} ({:.0} s)",
+            f.name,
+            sensor.name(),
+            t0.elapsed().as_secs_f64()
+        );
+        rows.push(Row {
+            family: f.name,
+            sensor: sensor.name(),
+            figures,
+        });
     }
     let mut t = String::new();
     writeln!(

@@ -92,27 +92,24 @@ fn main() -> Res<()> {
     let dev: Vec<u64> = SEARCH_SEEDS.iter().chain(JUDGE_SEEDS).copied().collect();
     seeds::check_round_seeds(&dev, TEST_SEEDS)?;
     let t0 = std::time::Instant::now();
-    let all: Vec<Family> = families().into_iter().chain([hospital_family()]).collect();
     let mut sets = vec![];
-    for f in all.iter().filter(|f| f.scans_per_room > 1) {
-        for sensor in std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()) {
-            for &seed in &dev {
-                eprintln!(
-                    "{} {} seed {seed} ({:.0} s)",
-                    f.name,
-                    sensor.name(),
-                    t0.elapsed().as_secs_f64()
-                );
-                // The first set is also described with `BASE` itself.
-                let check = sets.is_empty();
-                sets.push(describe_all_parts(
-                    f,
-                    sensor,
-                    seed,
-                    BASE,
-                    check.then_some(BASE),
-                )?);
-            }
+    for (f, sensor) in room_rows() {
+        for &seed in &dev {
+            eprintln!(
+                "{} {} seed {seed} ({:.0} s)",
+                f.name,
+                sensor.name(),
+                t0.elapsed().as_secs_f64()
+            );
+            // The first set is also described with `BASE` itself.
+            let check = sets.is_empty();
+            sets.push(describe_all_parts(
+                &f,
+                sensor,
+                seed,
+                BASE,
+                check.then_some(BASE),
+            )?);
         }
     }
     let described = t0.elapsed().as_secs_f64();

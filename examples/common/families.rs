@@ -13,6 +13,7 @@ pub const ROOM_SCANS: usize = 3;
 
 /// A scene family: how to simulate it from a seed, and the paper preset
 /// it is compared with.
+#[derive(Clone)]
 pub struct Family {
     pub name: &'static str,
     pub scene: SceneKind,
@@ -127,6 +128,21 @@ pub fn hospital_family() -> Family {
         paper: "indoor",
         sensors: SPARSE_SENSOR,
     }
+}
+
+/// The room rows of issue 18's rounds 9-15: every family with rooms (the
+/// hospital floors last) with its own sensor, then each of its others.
+#[allow(dead_code)]
+pub fn room_rows() -> Vec<(Family, Sensor)> {
+    (families().into_iter().chain([hospital_family()]))
+        .filter(|f| f.scans_per_room > 1)
+        .flat_map(|f| {
+            let sensors: Vec<Sensor> = std::iter::once(Sensor::Own)
+                .chain(f.sensors.iter().copied())
+                .collect();
+            sensors.into_iter().map(move |s| (f.clone(), s))
+        })
+        .collect()
 }
 
 pub fn sim_params(f: &Family, sensor: Sensor, seed: u64) -> placecat::Result<SimParams> {
