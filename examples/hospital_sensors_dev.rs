@@ -25,7 +25,7 @@ const SENSORS: [Sensor; 5] = [
 ];
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(DEV_SEEDS, &[])?;
+    check_dev()?;
     let t0 = std::time::Instant::now();
     let f = hospital_family();
     let presets: Vec<String> = PRESETS.iter().map(|p| p.to_string()).collect();
@@ -79,16 +79,14 @@ fn main() -> Res<()> {
         t,
         "# The hospital floors with more beams (issue 18, a development look)\n"
     )?;
-    writeln!(t, "Development seeds 1-6 only; it changes no preset, parameter or file but this one and tunes nothing. Regenerate with `cargo run --release --example hospital_sensors_dev` ({:.0} s). The hospital family (45 scans a set, 5 kinds in rooms of 3 scans) with its own sensor and with 16 to 128 beams; stride k-means and k-means++ best of 10 (mean over clustering seeds 0-9) at the true number of kinds, room-level 1-NN (no neighbour from the scan's own room); each the mean over the six seeds. \"Points\": a scan's mean number of returns.\n", t0.elapsed().as_secs_f64())?;
-    writeln!(t, "**What it shows** (written after the run): the hospital's own sensor has 128 beams (the same returns and figures as the 128-beam row), so its own row is already the densest sensing, and there neither preset reaches 85 % with both k-means (best: `indoor_searched` 79.6 / 82.2 %). Fewer beams cost `indoor_searched` 5.9 to 8.9 points with 16 beams, while `indoor_columns` does as well with 32 beams (79.3 / 78.0 / 86.3 %) as with 128. The sparse sensor makes the 16-beam row worse, but the family falls short with every sensor: what keeps its kinds together lies in the scenes as these descriptors see them, not in how densely they are sensed.\n")?;
+    writeln!(t, "{DEV_NOTE} Regenerate with `cargo run --release --example hospital_sensors_dev` ({:.0} s). The hospital family (45 scans a set, 5 kinds in rooms of 3 scans) with its own sensor and with 16 to 128 beams; stride k-means and k-means++ best of 10 (mean over clustering seeds 0-9) at the true number of kinds, room-level 1-NN (no neighbour from the scan's own room); each the mean over the six seeds. \"Points\": a scan's mean number of returns.\n", t0.elapsed().as_secs_f64())?;
+    writeln!(t, "**What it shows** (written after the run): the hospital's own sensor has 128 beams (the same returns and figures as the 128-beam row), so its own row is already the densest sensing, and there none of the three presets reaches 85 % with both k-means (best: `indoor_searched` 79.6 / 82.2 %). Fewer beams cost `indoor_searched` 5.9 to 8.9 points with 16 beams, while `indoor_columns` does as well with 32 beams (79.3 / 78.0 / 86.3 %) as with 128. The sparse sensor makes the 16-beam row worse, but the family falls short with every sensor: what keeps its kinds together lies in the scenes as these descriptors see them, not in how densely they are sensed.\n")?;
     writeln!(
         t,
         "| sensor | points | preset | stride k-means | best of 10 | room-level 1-NN |"
     )?;
     writeln!(t, "|---|---|---|---|---|---|")?;
     t.push_str(&table);
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/hospital-sensors-dev.md");
-    std::fs::write(path, t)?;
-    eprintln!("wrote docs/hospital-sensors-dev.md");
+    write_doc("hospital-sensors-dev.md", &t)?;
     Ok(())
 }

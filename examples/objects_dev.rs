@@ -3,7 +3,7 @@
 //! stand in a room carry what the parts miss? A probe, not a part: each
 //! scan's room contents (points off the floor and ceiling, nearer than
 //! their sector's wall) are cut into objects by connected 0.1 m cells,
-//! and their footprints, tops and elongations are histogrammed (after
+//! and their footprints, tops and roundness are histogrammed (after
 //! object-based place models such as Vasudevan et al., Robotics and
 //! Autonomous Systems 2007, without recognising the objects). Room-level
 //! 1-NN only, the information test: `indoor_searched`'s distance, plus the
@@ -16,7 +16,7 @@ use placecat::distance::Space;
 use placecat::sim::Simulation;
 use placecat::*;
 use rayon::prelude::*;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::fmt::Write;
 
 include!("common/dev_look.rs");
@@ -34,11 +34,12 @@ const BELOW_CEILING: f32 = 0.3;
 const WALL_SHARE: f32 = 0.9;
 const MIN_CELLS: usize = 3;
 /// Histogram bins: log10 footprint (m²) over [-2, 1], top (m) over [0, 2.4],
-/// elongation over [0, 1], objects per m² of floor seen over [0, 0.5].
+/// roundness over [0, 1], objects per m² of the cells seen (any return
+/// within `NEAR`) over [0, 0.5].
 const BINS: usize = 10;
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(DEV_SEEDS, &[])?;
+    check_dev()?;
     let t0 = std::time::Instant::now();
     let params = DescriptorParams::preset(PRESET)?;
     let mut table = String::new();
@@ -94,7 +95,7 @@ fn main() -> Res<()> {
         t,
         "# The objects in a room, a probe (issue 18, a development look)\n"
     )?;
-    writeln!(t, "Development seeds 1-6 only; it changes no preset, parameter or file but this one and tunes nothing. Regenerate with `cargo run --release --example objects_dev` ({:.0} s). Every room row, 45 scans a set. Each scan's contents (points within {NEAR} m horizontally, {ABOVE_FLOOR} m above the floor to {BELOW_CEILING} m below the ceiling (`floor_and_ceiling`), nearer than {WALL_SHARE} of their {SECTORS}-sector wall, the farthest return in the sector at that height band) on a {CELL} m grid; 8-connected groups of at least {MIN_CELLS} cells are the objects; histograms ({BINS} bins, unit sum) of their log footprint, their top above the floor and their elongation (the square root of the ratio of their cells' second moments), and their number per m² of the cells seen. The objects' distance: the mean over those four channels of the 1-D earth mover's distance divided by bins - 1, in [0, 1] as every part's. Room-level 1-NN (no neighbour from the scan's own room), mean over the six seeds: `{PRESET}`'s distance, plus the objects' at weight w, and the objects' alone.\n", t0.elapsed().as_secs_f64())?;
+    writeln!(t, "{DEV_NOTE} Regenerate with `cargo run --release --example objects_dev` ({:.0} s). Every room row, 45 scans a set. Each scan's contents (points within {NEAR} m horizontally, {ABOVE_FLOOR} m above the floor to {BELOW_CEILING} m below the ceiling (`floor_and_ceiling`), nearer than {WALL_SHARE} of their {SECTORS}-sector wall, the farthest return in the sector at that height band) on a {CELL} m grid; 8-connected groups of at least {MIN_CELLS} cells are the objects; histograms ({BINS} bins, unit sum) of their log footprint, their top above the floor and their roundness (the square root of the ratio of their cells' smaller to larger second moment: 1 round, 0 a line), and their number per m² of the cells seen. The objects' distance: the mean over those four channels of the 1-D earth mover's distance divided by bins - 1, in [0, 1] as every part's. Room-level 1-NN (no neighbour from the scan's own room), mean over the six seeds: `{PRESET}`'s distance, plus the objects' at weight w, and the objects' alone.\n", t0.elapsed().as_secs_f64())?;
     writeln!(t, "**What it shows** (written after the run): the objects carry a little of what the preset misses. Over the 14 rows room-level 1-NN rises from 91.7 to at most 92.5 % (w = 2); the hospital with its own sensor gains most (82.6 to 87.4 % at w = 10), the school with 64 beams 93.7 to 97.0 % (w = 10 and 20), the hospital with 16 beams nothing (76.3 %, 75.2 to 76.3 % with the objects), the office floor with its own sensor nothing either (88.1 %, 85.2 to 88.1 %). Alone the objects reach 67.1 % on average, 47.8 % on the hospital with 16 beams, where with few beams an object is a few cells of one side. A probe only: not a part, not measured with k-means, and nothing here judges it.\n")?;
     let heads: Vec<String> = WEIGHTS.iter().map(|w| format!("+ objects x {w}")).collect();
     writeln!(
@@ -106,9 +107,7 @@ fn main() -> Res<()> {
     t.push_str(&table);
     let cells: Vec<String> = means.iter().map(|&x| pct(x / rows)).collect();
     writeln!(t, "| mean | {} |", cells.join(" | "))?;
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/objects-dev.md");
-    std::fs::write(path, t)?;
-    eprintln!("wrote docs/objects-dev.md");
+    write_doc("objects-dev.md", &t)?;
     Ok(())
 }
 
@@ -140,16 +139,13 @@ fn objects(points: &[[f32; 3]]) -> Vec<Vec<f32>> {
     }
     // Cells seen (any finite point within reach) and cells of contents.
     let key = |p: &[f32; 3]| ((p[0] / CELL).floor() as i32, (p[1] / CELL).floor() as i32);
-    let mut seen = 0usize;
-    let mut seen_cells: HashMap<(i32, i32), ()> = HashMap::new();
+    let mut seen_cells: HashSet<(i32, i32)> = HashSet::new();
     let mut tops: HashMap<(i32, i32), f32> = HashMap::new();
     for p in points
         .iter()
         .filter(|p| p.iter().all(|v| v.is_finite()) && range(p) < NEAR)
     {
-        if seen_cells.insert(key(p), ()).is_none() {
-            seen += 1;
-        }
+        seen_cells.insert(key(p));
         if band(p) && range(p) < WALL_SHARE * wall[sector(p)] {
             let top = tops.entry(key(p)).or_insert(f32::MIN);
             *top = top.max(p[2] - floor);
@@ -183,12 +179,13 @@ fn objects(points: &[[f32; 3]]) -> Vec<Vec<f32>> {
         found.push(cells);
     }
     let objects: Vec<&Vec<(i32, i32)>> = found.iter().filter(|c| c.len() >= MIN_CELLS).collect();
+    let seen = seen_cells.len();
     if objects.is_empty() || seen == 0 {
         return empty();
     }
     let mut area = vec![0f32; BINS];
     let mut top = vec![0f32; BINS];
-    let mut elongation = vec![0f32; BINS];
+    let mut roundness = vec![0f32; BINS];
     for cells in &objects {
         let n = cells.len() as f32;
         let a = (n * CELL * CELL).log10();
@@ -210,13 +207,13 @@ fn objects(points: &[[f32; 3]]) -> Vec<Vec<f32>> {
         let d = ((sxx - syy).powi(2) + 4.0 * sxy * sxy).sqrt();
         let (l1, l2) = ((tr + d) / 2.0, ((tr - d) / 2.0).max(0.0));
         add(
-            &mut elongation,
+            &mut roundness,
             if l1 > 0.0 { (l2 / l1).sqrt() } else { 1.0 },
             1.0,
         );
     }
     let density = objects.len() as f32 / (seen as f32 * CELL * CELL);
-    let mut out = vec![area, top, elongation];
+    let mut out = vec![area, top, roundness];
     for h in &mut out {
         let s: f32 = h.iter().sum();
         h.iter_mut().for_each(|v| *v /= s);

@@ -29,7 +29,7 @@ struct Row {
 }
 
 fn main() -> Res<()> {
-    seeds::check_round_seeds(DEV_SEEDS, &[])?;
+    check_dev()?;
     let t0 = std::time::Instant::now();
     let mut rows = vec![];
     for (f, sensor) in room_rows() {
@@ -60,7 +60,7 @@ fn main() -> Res<()> {
         t,
         "# k-means on the distance rows (issue 18, a development look)\n"
     )?;
-    writeln!(t, "Development seeds 1-6 only; it changes no preset, parameter or file but this one and tunes nothing. Regenerate with `cargo run --release --example profiles_dev` ({:.0} s). `{PRESET}` on every room row, 45 scans a set at the true number of kinds. \"Descriptors\": the harness's stride k-means and k-means++ best of 10 (mean over clustering seeds 0-9). \"Distance rows\": each scan represented by its row of the Delta matrix (its distances to every scan of the set), then Euclidean k-means with the same seedings (stride: scans i n / k; k-means++ best of 10 by the lowest sum of squares, clustering seeds 0-9). Mean over the six seeds.\n", t0.elapsed().as_secs_f64())?;
+    writeln!(t, "{DEV_NOTE} Regenerate with `cargo run --release --example profiles_dev` ({:.0} s). `{PRESET}` on every room row, 45 scans a set at the true number of kinds. \"Descriptors\": the harness's stride k-means and k-means++ best of 10 (mean over clustering seeds 0-9). \"Distance rows\": each scan represented by its row of the Delta matrix (its distances to every scan of the set), then Euclidean k-means with the same seedings (stride: scans i n / k; k-means++ best of 10 by the lowest sum of squares, clustering seeds 0-9). Mean over the six seeds.\n", t0.elapsed().as_secs_f64())?;
     writeln!(t, "| row | stride, descriptors | stride, distance rows | best of 10, descriptors | best of 10, distance rows |")?;
     writeln!(t, "|---|---|---|---|---|")?;
     for r in &rows {
@@ -96,9 +96,7 @@ fn main() -> Res<()> {
         100.0 * (mean(1) - mean(0)),
         100.0 * (mean(3) - mean(2))
     )?;
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/profiles-dev.md");
-    std::fs::write(path, t)?;
-    eprintln!("wrote docs/profiles-dev.md");
+    write_doc("profiles-dev.md", &t)?;
     Ok(())
 }
 

@@ -25,7 +25,6 @@ use std::fmt::Write;
 
 #[path = "common/families.rs"]
 mod families;
-use families::*;
 // The rounds' tables go unused here.
 #[allow(dead_code)]
 #[path = "common/rounds.rs"]
@@ -87,24 +86,12 @@ fn main() -> Res<()> {
     seeds::check_seen(SEEN_SEEDS, TEST_SEEDS)?;
     let search_seeds: Vec<u64> = DEV_SEEDS.iter().chain(SEEN_SEEDS).copied().collect();
     let t0 = std::time::Instant::now();
-    let mut sets = vec![];
-    for (f, sensor) in room_rows() {
-        for &seed in search_seeds.iter().chain(JUDGE_SEEDS) {
-            eprintln!(
-                "{} {} seed {seed} ({:.0} s)",
-                f.name,
-                sensor.name(),
-                t0.elapsed().as_secs_f64()
-            );
-            // The first set is also described with `START` itself.
-            let check = sets.is_empty().then_some(START);
-            sets.push(describe_all_parts(&f, sensor, seed, START, check)?);
-        }
-    }
+    let seeds: Vec<u64> = search_seeds.iter().chain(JUDGE_SEEDS).copied().collect();
+    // The first set is also described with `START` itself.
+    let sets = describe_rows(&seeds, START, START, t0)?;
     let described = t0.elapsed().as_secs_f64();
     let start = weights_of(&DescriptorParams::preset(START)?);
-    let mut keys: Vec<(&str, &str)> = sets.iter().map(|s| (s.family, s.sensor.as_str())).collect();
-    keys.dedup();
+    let keys = row_keys(&sets);
 
     let search: Vec<&Set> = (sets.iter())
         .filter(|s| search_seeds.contains(&s.seed))

@@ -26,7 +26,6 @@ use std::fmt::Write;
 
 #[path = "common/families.rs"]
 mod families;
-use families::*;
 // The rounds' tables go unused here.
 #[allow(dead_code)]
 #[path = "common/rounds.rs"]
@@ -92,26 +91,8 @@ fn main() -> Res<()> {
     let dev: Vec<u64> = SEARCH_SEEDS.iter().chain(JUDGE_SEEDS).copied().collect();
     seeds::check_round_seeds(&dev, TEST_SEEDS)?;
     let t0 = std::time::Instant::now();
-    let mut sets = vec![];
-    for (f, sensor) in room_rows() {
-        for &seed in &dev {
-            eprintln!(
-                "{} {} seed {seed} ({:.0} s)",
-                f.name,
-                sensor.name(),
-                t0.elapsed().as_secs_f64()
-            );
-            // The first set is also described with `BASE` itself.
-            let check = sets.is_empty();
-            sets.push(describe_all_parts(
-                &f,
-                sensor,
-                seed,
-                BASE,
-                check.then_some(BASE),
-            )?);
-        }
-    }
+    // The first set is also described with `BASE` itself.
+    let sets = describe_rows(&dev, BASE, BASE, t0)?;
     let described = t0.elapsed().as_secs_f64();
     let base = weights_of(&DescriptorParams::preset(BASE)?);
 
@@ -138,8 +119,7 @@ fn main() -> Res<()> {
 
     // Every row, both weightings, the harness's figures on both seed sets.
     let figures = both(&sets, &base, &w)?;
-    let mut keys: Vec<(&str, &str)> = sets.iter().map(|s| (s.family, s.sensor.as_str())).collect();
-    keys.dedup();
+    let keys = row_keys(&sets);
     let of = |key, seeds: &[u64], which| row_figures(&sets, &figures, key, seeds, which);
     let rows: Vec<RowOut> = (keys.iter())
         .map(|&key| RowOut {

@@ -1,6 +1,6 @@
 //! The scene families and sensors of issue 18's evaluation, shared by
-//! `examples/descriptors.rs` (every preset, rounds 1-3) and
-//! `examples/kmeans_restarts.rs` (round 4: k-means restarts).
+//! every example of its rounds (from `examples/descriptors.rs`, rounds
+//! 1-3, to the searches and the development looks).
 
 use placecat::sim::{Buildings, LidarParams, SceneKind, SimParams};
 

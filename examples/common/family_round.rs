@@ -26,7 +26,7 @@ use preset_rounds::*;
 use rounds::*;
 use site_rounds::*;
 
-/// A round over every family (rounds 10-14): its seeds checked against
+/// A round over every family (rounds 10-15): its seeds checked against
 /// docs/seeds.md, `added` put after each room family's presets
 /// ([`round_presets`]), then [`every_family_round`], which leaves
 /// `candidates` (no presets) out of the real scans.

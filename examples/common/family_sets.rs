@@ -1,7 +1,8 @@
-//! What the rounds that add a preset to every family share (round 8,
-//! `columns.rs`; round 9, `scaled.rs`; round 10, `floor.rs`): a set's
-//! figures for each preset, the table of their means by family and
-//! sensor, the report, and (rounds 9 and 10) the run over every family.
+//! What the rounds that add a preset or a candidate to every family share
+//! (round 8, `columns.rs`; round 9, `scaled.rs`; rounds 10-15, through
+//! `family_round.rs`): a set's figures for each preset, the table of their
+//! means by family and sensor, the report, the run over every family, and
+//! the candidates (made by a round, not named presets).
 //! Include after `families.rs`, `real.rs`, `rounds.rs`, `site_rounds.rs`
 //! and `preset_rounds.rs`.
 
@@ -204,15 +205,22 @@ pub fn without(names: &[String], candidates: &[&str]) -> Vec<String> {
 }
 
 /// A round's candidate: its name and how its parameters are made.
-#[allow(dead_code)] // rounds 12 and 13
+#[allow(dead_code)] // rounds 12, 13 and 15
 pub type Candidate = (&'static str, fn() -> Res<DescriptorParams>);
 
 /// A candidate made of searched weights (rounds 13 and 15): `base`'s
 /// parameters named `name`, with the weights docs/`file` found (its
 /// `found_weights`: the NDT histogram's, then one per part kind in
-/// `PartKind::ALL`'s order; a kind of weight 0 is left out).
+/// `PartKind::ALL`'s order; a kind of weight 0 is left out). They must be
+/// `tested`, the weights the round's test run was made with, so that a
+/// search run again with other results cannot change a report's candidate.
 #[allow(dead_code)] // rounds 13 and 15
-pub fn searched_weights(name: &str, file: &str, base: &str) -> Res<DescriptorParams> {
+pub fn searched_weights(
+    name: &str,
+    file: &str,
+    base: &str,
+    tested: &[f32],
+) -> Res<DescriptorParams> {
     use placecat::descriptor::{Part, PartKind};
     #[derive(Deserialize)]
     struct Search {
@@ -225,6 +233,12 @@ pub fn searched_weights(name: &str, file: &str, base: &str) -> Res<DescriptorPar
             "docs/{file}: {} weights, not {}",
             w.len(),
             1 + PartKind::ALL.len()
+        )
+        .into());
+    }
+    if w != tested {
+        return Err(format!(
+            "docs/{file}: found weights {w:?}, not the {tested:?} this round was tested with"
         )
         .into());
     }
@@ -244,7 +258,16 @@ pub fn searched_weights(name: &str, file: &str, base: &str) -> Res<DescriptorPar
     Ok(p)
 }
 
-/// A set of a round with candidates (rounds 12 and 13): the set described
+/// A descriptor's weights in words: "the NDT histogram 1, slice 4, ...".
+#[allow(dead_code)] // rounds 13 and 15
+pub fn weights_text(p: &DescriptorParams) -> String {
+    let ndt = std::iter::once(format!("the NDT histogram {}", p.ndt_weight));
+    ndt.chain((p.parts.iter()).map(|part| format!("{} {}", part.kind.name(), part.weight)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A set of a round with candidates (rounds 12, 13 and 15): the set described
 /// with `presets` (the candidates among them made by `candidates`), and
 /// each one's figures and room-level 1-NN. A candidate that cannot describe
 /// every scan is an error naming the set.

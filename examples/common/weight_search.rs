@@ -5,7 +5,7 @@
 //! a weighting; and coordinate ascent over the nine weights.
 //! Include after `families.rs` and `rounds.rs`.
 
-use crate::families::{Family, Sensor};
+use crate::families::{room_rows, Family, Sensor};
 use crate::rounds::{describe_set_with, room_level_nn, Apart, Res, CLUSTER_SEEDS};
 use placecat::cluster::*;
 use placecat::descriptor::{DescriptorParams, Part, PartKind};
@@ -112,6 +112,43 @@ pub fn describe_all_parts(
         }
     }
     Ok(out)
+}
+
+/// Every room row on each of `seeds`, described with every part kind on
+/// `base`'s NDT settings (progress on stderr); the first set also with
+/// `check` (see [`describe_all_parts`]).
+pub fn describe_rows(
+    seeds: &[u64],
+    base: &str,
+    check: &str,
+    t0: std::time::Instant,
+) -> Res<Vec<Set>> {
+    let mut sets = vec![];
+    for (f, sensor) in room_rows() {
+        for &seed in seeds {
+            eprintln!(
+                "{} {} seed {seed} ({:.0} s)",
+                f.name,
+                sensor.name(),
+                t0.elapsed().as_secs_f64()
+            );
+            let first = sets.is_empty().then_some(check);
+            sets.push(describe_all_parts(&f, sensor, seed, base, first)?);
+        }
+    }
+    Ok(sets)
+}
+
+/// The rows (family, sensor) of `sets`, each once, in the order they first
+/// appear.
+pub fn row_keys(sets: &[Set]) -> Vec<(&str, &str)> {
+    let mut keys: Vec<(&str, &str)> = vec![];
+    for key in sets.iter().map(|s| (s.family, s.sensor.as_str())) {
+        if !keys.contains(&key) {
+            keys.push(key);
+        }
+    }
+    keys
 }
 
 /// A preset's weights in the order of [`WEIGHTS`].
