@@ -45,14 +45,9 @@ fn main() -> Res<()> {
                     return Err(format!("{name} described out of order").into());
                 }
                 let space = Space::new(descriptors, DistanceOptions::from(params))?;
-                let k = set.kinds;
-                let stride = KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?;
-                let stride = placecat::eval::evaluate(&set.truth, &stride.labels)?.accuracy;
-                let best = over_seeds(&set.truth, |s| {
-                    Ok(KMeans::fit(&space, &KMeansParams::new(k).seed(s).restarts(10))?.labels)
-                })?;
+                let (stride, best) = kmeans_figures(&space, &set.truth, set.kinds)?;
                 let nn = room_level_nn(&space.matrix(), &set.truth, &set.apart);
-                for (m, x) in sums[p].iter_mut().zip([stride, best.accuracy, nn]) {
+                for (m, x) in sums[p].iter_mut().zip([stride, best, nn]) {
                     *m += x / DEV_SEEDS.len() as f64;
                 }
             }

@@ -11,7 +11,9 @@
 //!
 //!     cargo run --release --example objects_dev   # -> docs/objects-dev.md
 
+use placecat::cloud::is_finite;
 use placecat::descriptor::clutter::floor_and_ceiling;
+use placecat::descriptor::parts::{scalar_channel, sector_of, soft_bin, unit_sum};
 use placecat::distance::Space;
 use placecat::sim::Simulation;
 use placecat::*;
@@ -119,21 +121,15 @@ fn room_ids(sim: &Simulation) -> Vec<usize> {
 /// The four channels (histograms of unit sum) of a scan's objects; every
 /// channel's mass in bin 0 with no floor or no object.
 fn objects(points: &[[f32; 3]]) -> Vec<Vec<f32>> {
-    let empty = || vec![unit(0.0, 0.0, 1.0); 4];
+    let empty = || vec![scalar_channel(BINS, 0.0, 0.0, 1.0); 4];
     let Some((floor, ceiling)) = floor_and_ceiling(points) else {
         return empty();
     };
-    let sector = |p: &[f32; 3]| {
-        let a = p[1].atan2(p[0]) + std::f32::consts::PI;
-        ((a / (2.0 * std::f32::consts::PI) * SECTORS as f32) as usize).min(SECTORS - 1)
-    };
+    let sector = |p: &[f32; 3]| sector_of(p, SECTORS);
     let range = |p: &[f32; 3]| p[0].hypot(p[1]);
     let band = |p: &[f32; 3]| p[2] > floor + ABOVE_FLOOR && p[2] < ceiling - BELOW_CEILING;
     let mut wall = [0f32; SECTORS];
-    for p in points
-        .iter()
-        .filter(|p| p.iter().all(|v| v.is_finite()) && band(p))
-    {
+    for p in points.iter().filter(|p| is_finite(p) && band(p)) {
         let s = sector(p);
         wall[s] = wall[s].max(range(p));
     }
@@ -141,10 +137,7 @@ fn objects(points: &[[f32; 3]]) -> Vec<Vec<f32>> {
     let key = |p: &[f32; 3]| ((p[0] / CELL).floor() as i32, (p[1] / CELL).floor() as i32);
     let mut seen_cells: HashSet<(i32, i32)> = HashSet::new();
     let mut tops: HashMap<(i32, i32), f32> = HashMap::new();
-    for p in points
-        .iter()
-        .filter(|p| p.iter().all(|v| v.is_finite()) && range(p) < NEAR)
-    {
+    for p in points.iter().filter(|p| is_finite(p) && range(p) < NEAR) {
         seen_cells.insert(key(p));
         if band(p) && range(p) < WALL_SHARE * wall[sector(p)] {
             let top = tops.entry(key(p)).or_insert(f32::MIN);
@@ -186,12 +179,14 @@ fn objects(points: &[[f32; 3]]) -> Vec<Vec<f32>> {
     let mut area = vec![0f32; BINS];
     let mut top = vec![0f32; BINS];
     let mut roundness = vec![0f32; BINS];
+    // Positions on [0, 1] of a channel, in bins.
+    let at = |x: f32| f64::from(x) * (BINS - 1) as f64;
     for cells in &objects {
         let n = cells.len() as f32;
         let a = (n * CELL * CELL).log10();
-        add(&mut area, (a + 2.0) / 3.0, 1.0);
+        soft_bin(&mut area, at((a + 2.0) / 3.0), 1.0);
         let t = cells.iter().map(|c| tops[c]).fold(f32::MIN, f32::max);
-        add(&mut top, t / 2.4, 1.0);
+        soft_bin(&mut top, at(t / 2.4), 1.0);
         let (mx, my) = (
             cells.iter().map(|c| c.0 as f32).sum::<f32>() / n,
             cells.iter().map(|c| c.1 as f32).sum::<f32>() / n,
@@ -206,39 +201,20 @@ fn objects(points: &[[f32; 3]]) -> Vec<Vec<f32>> {
         let tr = sxx + syy;
         let d = ((sxx - syy).powi(2) + 4.0 * sxy * sxy).sqrt();
         let (l1, l2) = ((tr + d) / 2.0, ((tr - d) / 2.0).max(0.0));
-        add(
-            &mut roundness,
-            if l1 > 0.0 { (l2 / l1).sqrt() } else { 1.0 },
-            1.0,
-        );
+        let round = if l1 > 0.0 { (l2 / l1).sqrt() } else { 1.0 };
+        soft_bin(&mut roundness, at(round), 1.0);
     }
     let density = objects.len() as f32 / (seen as f32 * CELL * CELL);
     let mut out = vec![area, top, roundness];
-    for h in &mut out {
-        let s: f32 = h.iter().sum();
-        h.iter_mut().for_each(|v| *v /= s);
-    }
-    out.push(unit(density, 0.0, 0.5));
+    out.iter_mut().for_each(|h| unit_sum(h));
+    out.push(scalar_channel(BINS, f64::from(density), 0.0, 0.5));
     out
 }
 
-/// One unit of mass at `x` on [lo, hi], split between its two nearest bins.
-fn unit(x: f32, lo: f32, hi: f32) -> Vec<f32> {
-    let mut h = vec![0f32; BINS];
-    add(&mut h, (x - lo) / (hi - lo), 1.0);
-    h
-}
-
-/// Add `mass` at position `at` in [0, 1] of `h`, split linearly.
-fn add(h: &mut [f32], at: f32, mass: f32) {
-    let x = at.clamp(0.0, 1.0) * (h.len() - 1) as f32;
-    let i = (x.floor() as usize).min(h.len() - 2);
-    let f = x - i as f32;
-    h[i] += mass * (1.0 - f);
-    h[i + 1] += mass * f;
-}
-
-/// The mean over channels of the 1-D earth mover's distance / (bins - 1).
+/// The mean over channels of the 1-D earth mover's distance / (bins - 1):
+/// the parts' distance (`parts::cumulative` and `parts_distance`), written
+/// out here because the probe is no `PartKind` and those read a kind's
+/// channels.
 fn channels_distance(a: &[Vec<f32>], b: &[Vec<f32>]) -> f32 {
     let per: Vec<f32> = (a.iter().zip(b))
         .map(|(x, y)| {

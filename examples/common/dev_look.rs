@@ -33,3 +33,15 @@ fn write_doc(name: &str, text: &str) -> Res<()> {
     eprintln!("wrote docs/{name}");
     Ok(())
 }
+
+/// Stride k-means' accuracy, and k-means++ best of 10's as the mean over
+/// clustering seeds 0-9 (as the rounds' harness), on `space` at `k`.
+#[allow(dead_code)] // profiles_dev and hospital_sensors_dev
+fn kmeans_figures(space: &placecat::distance::Space, truth: &[String], k: usize) -> Res<(f64, f64)> {
+    use placecat::cluster::{KMeans, KMeansParams, Seeding};
+    let stride = KMeans::fit(space, &KMeansParams::new(k).seeding(Seeding::Stride))?;
+    let best = over_seeds(truth, |s| {
+        Ok(KMeans::fit(space, &KMeansParams::new(k).seed(s).restarts(10))?.labels)
+    })?;
+    Ok((once(truth, &stride.labels)?.accuracy, best.accuracy))
+}

@@ -66,6 +66,8 @@ struct Plane {
 /// The three histograms, each of unit sum.
 pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
     let grid = ndt_grid::build(points, VOXEL, MIN_POINTS);
+    // `planes` checks the range again, for cells handed over whole by
+    // `describe_cells`; here it also spares classifying far cells.
     let cells: Vec<ShapedCell> = (grid.cells.iter())
         .filter(|c| within_range(&c.mean))
         .filter_map(|c| shape::classify(c, EIGEN_THRESHOLD))

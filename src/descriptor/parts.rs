@@ -370,7 +370,6 @@ pub fn parts_distance(a: &[f32], b: &[f32]) -> f32 {
 mod tests {
     use super::*;
 
-    /// Soft binning makes the EMD of two scalars their distance in bins.
     #[test]
     fn a_kinds_name_is_its_json_name() {
         for kind in PartKind::ALL {
@@ -378,6 +377,7 @@ mod tests {
         }
     }
 
+    /// Soft binning makes the EMD of two scalars their distance in bins.
     #[test]
     fn soft_binned_scalars_compare_as_their_difference() {
         let pv = |x: f64| PartValues {

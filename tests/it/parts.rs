@@ -595,10 +595,13 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
 /// `describe` hands the NDT histogram's cells to the `iron` part when its
 /// grid is the part's own (0.4 m, 5 points, eigen threshold 0.05: the
 /// paper's indoor values), so the grid is built once; with another grid
-/// the part builds its own. Either way its values are the part's alone,
-/// bit for bit (the digests above pin the shared path on 28 scans).
+/// the part builds its own. Either way its values must be the part's
+/// alone, bit for bit: this checks the values on both paths (a grid of
+/// other settings handed over would change them), not which path ran;
+/// `iron::shares_grid`'s unit test checks the choice, and the digests
+/// above pin the shared path on 28 scans.
 #[test]
-fn the_iron_part_shares_the_histograms_grid_only_when_it_is_its_own() {
+fn the_iron_part_is_the_same_whether_or_not_it_shares_the_histograms_grid() {
     use placecat::sim::{SceneKind, SimParams, Simulation};
     let mut p = SimParams::new(SceneKind::School, 2);
     p.scans = 1;
