@@ -7,8 +7,8 @@
 //!
 //!     cargo run --release --example parts_dev -- [--seeds 1,2,3] [--scans N] [--only NAME] [WEIGHTS...]
 //!
-//! WEIGHTS: `ndt,height_range,slice,esf,ring,clutter,m2dp,columns,iron` (e.g.
-//! `1,0,5,5,5,0,0,0,0`); without any, a fixed list. The office and school floors
+//! WEIGHTS: `ndt,height_range,slice,esf,ring,clutter,m2dp,columns,iron,objects`
+//! (e.g. `1,0,5,5,5,0,0,0,0,0`); without any, a fixed list. The office and school floors
 //! (9 scans a kind, 3 a room, as in `examples/descriptors.rs`) score 1-NN
 //! with no neighbour from the scan's own room. Never run on test seeds:
 //! every seed of the test column of docs/seeds.md is refused.
@@ -171,7 +171,7 @@ fn main() -> Res<()> {
             w => {
                 let v: Vec<f32> = w.split(',').map(str::parse).collect::<Result<_, _>>()?;
                 weights.push(v.try_into().map_err(|_| {
-                    "nine weights: ndt,height_range,slice,esf,ring,clutter,m2dp,columns,iron"
+                    "ten weights: ndt,height_range,slice,esf,ring,clutter,m2dp,columns,iron,objects"
                 })?);
             }
         }
@@ -182,12 +182,12 @@ fn main() -> Res<()> {
     }
     if weights.is_empty() {
         weights = vec![
-            [1., 0., 0., 0., 0., 0., 0., 0., 0.],
-            [1., 0., 5., 5., 5., 0., 0., 0., 0.],
-            [1., 0., 0., 0., 0., 5., 0., 0., 0.],
-            [1., 0., 5., 5., 5., 5., 0., 0., 0.],
-            [1., 0., 5., 0., 5., 5., 0., 0., 0.],
-            [0., 0., 0., 0., 0., 10., 0., 0., 0.],
+            [1., 0., 0., 0., 0., 0., 0., 0., 0., 0.],
+            [1., 0., 5., 5., 5., 0., 0., 0., 0., 0.],
+            [1., 0., 0., 0., 0., 5., 0., 0., 0., 0.],
+            [1., 0., 5., 5., 5., 5., 0., 0., 0., 0.],
+            [1., 0., 5., 0., 5., 5., 0., 0., 0., 0.],
+            [0., 0., 0., 0., 0., 10., 0., 0., 0., 0.],
         ];
     }
     for &seed in &seeds {

@@ -42,8 +42,9 @@ const CANDIDATES: [&str; 1] = [SEARCHED];
 /// The search's output, which names the weights.
 const SEARCH: &str = "weights-dev.json";
 /// The weights the test run was made with (docs/weights-dev.json, commit
-/// 7fa6525): the NDT histogram's, then one per part kind.
-const TESTED: [f32; 9] = [1.0, 0.0, 4.0, 32.0, 1.0, 10.0, 0.0, 5.0, 10.0];
+/// 7fa6525): the NDT histogram's, then one per part kind (`objects`, added
+/// after it, 0).
+const TESTED: [f32; 10] = [1.0, 0.0, 4.0, 32.0, 1.0, 10.0, 0.0, 5.0, 10.0, 0.0];
 
 /// `indoor_columns`' parameters with the weights the search found.
 fn searched() -> Res<DescriptorParams> {

@@ -72,14 +72,17 @@ pub struct ScaledWeights {
 /// Part weights as a model file holds them: one per part kind of the
 /// version that wrote it. A model written before `iron` was added lists
 /// seven (the only count written before; the median scale came after
-/// `columns`), and `iron` weighs 0 in it; any other count is an error.
+/// `columns`), one written before `objects` eight; the kinds added since
+/// weigh 0 in it. Any other count is an error.
 fn part_weights_of_any_version<'de, D: serde::Deserializer<'de>>(
     d: D,
 ) -> std::result::Result<[f32; MAX_PARTS], D::Error> {
+    /// Part kinds when the median scale came (before `iron`).
+    const FIRST: usize = 7;
     let given = Vec::<f32>::deserialize(d)?;
-    if !(MAX_PARTS - 1..=MAX_PARTS).contains(&given.len()) {
+    if !(FIRST..=MAX_PARTS).contains(&given.len()) {
         return Err(serde::de::Error::custom(format!(
-            "{} part weights, but this version knows {MAX_PARTS} part kinds (or {} before iron)",
+            "{} part weights, but this version knows {MAX_PARTS} part kinds (or {FIRST} to {} from earlier versions)",
             given.len(),
             MAX_PARTS - 1
         )));

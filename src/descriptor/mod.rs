@@ -2,7 +2,7 @@
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices; and optional extra [`parts`] beside it (issue
 //! 18): [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`], [`m2dp`], [`columns`], [`iron`].
+//! [`clutter`], [`m2dp`], [`columns`], [`iron`], [`objects`].
 
 pub mod alignment;
 pub mod clutter;
@@ -14,6 +14,7 @@ pub mod histogram;
 pub mod iron;
 pub mod m2dp;
 pub mod ndt_grid;
+pub mod objects;
 pub mod params;
 pub mod parts;
 pub mod polar;

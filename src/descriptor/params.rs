@@ -631,10 +631,9 @@ impl DescriptorParams {
                 "sensor_height must be above 0 and at most {MAX_SENSOR_HEIGHT} m (the sensor's height above the floor), got {h}"
             ));
         }
-        let reads = |p: &Part| matches!(p.kind, PartKind::Clutter | PartKind::Columns);
-        if !self.parts.iter().any(reads) {
+        if !self.parts.iter().any(|p| p.kind.measures_from_floor()) {
             return invalid(
-                "sensor_height is read only by the clutter and columns parts, and these parameters have neither (presets indoor_clutter and indoor_columns have them)",
+                "sensor_height is read only by the clutter, columns and objects parts, and these parameters have none of them (presets indoor_clutter and indoor_columns have them)",
             );
         }
         Ok(())

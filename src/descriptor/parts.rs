@@ -8,17 +8,17 @@
 //! compares as the absolute difference of the feature over its range.
 //!
 //! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`], [`m2dp`], [`columns`], [`iron`].
+//! [`clutter`], [`m2dp`], [`columns`], [`iron`], [`objects`].
 
 use super::polar::PolarScan;
 use super::shape::ShapedCell;
-use super::{clutter, columns, esf, height_range, iron, m2dp, ring, slice};
+use super::{clutter, columns, esf, height_range, iron, m2dp, objects, ring, slice};
 use crate::cloud::is_finite;
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::{Deserialize, Serialize};
 
 /// Most parts one descriptor may have (one of each kind).
-pub const MAX_PARTS: usize = 8;
+pub const MAX_PARTS: usize = 9;
 
 /// Which extra part.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -46,6 +46,10 @@ pub enum PartKind {
     /// and angles of nearby pairs (after IRON, Schmiedel et al. 2015;
     /// [`iron`]).
     Iron,
+    /// What stands in the room, object by object: footprints, tops,
+    /// roundness and number of connected pieces (after object-based place
+    /// models, Vasudevan et al. 2007; [`objects`]).
+    Objects,
 }
 
 impl PartKind {
@@ -59,6 +63,7 @@ impl PartKind {
         PartKind::M2dp,
         PartKind::Columns,
         PartKind::Iron,
+        PartKind::Objects,
     ];
 
     /// Position in [`PartKind::ALL`].
@@ -77,6 +82,7 @@ impl PartKind {
             PartKind::M2dp => "m2dp",
             PartKind::Columns => "columns",
             PartKind::Iron => "iron",
+            PartKind::Objects => "objects",
         }
     }
 
@@ -91,7 +97,17 @@ impl PartKind {
             PartKind::M2dp => &m2dp::CHANNELS,
             PartKind::Columns => &columns::CHANNELS,
             PartKind::Iron => &iron::CHANNELS,
+            PartKind::Objects => &objects::CHANNELS,
         }
+    }
+
+    /// Whether the part measures heights from the floor, and so reads a
+    /// given `sensor_height` in place of each scan's estimate.
+    pub fn measures_from_floor(self) -> bool {
+        matches!(
+            self,
+            PartKind::Clutter | PartKind::Columns | PartKind::Objects
+        )
     }
 
     /// Values of the part: the sum of [`channels`](Self::channels).
@@ -122,6 +138,7 @@ impl PartKind {
             PartKind::M2dp => m2dp::describe(points),
             PartKind::Columns => columns::describe_scan(scan),
             PartKind::Iron => iron::describe(points),
+            PartKind::Objects => objects::describe_scan(scan),
         };
         debug_assert_eq!(v.len(), self.len());
         v

@@ -402,7 +402,9 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
 /// other digest stayed. The columns part's 28 were added when it came
 /// (round 8), and the clutter part's room test moved into a function it
 /// shares with it: every other digest stayed. The iron part's 28 were
-/// added when it came (round 12); every other digest stayed.
+/// added when it came (round 12); every other digest stayed. The objects
+/// part's 28 were added when it came (round 16); every other digest
+/// stayed.
 /// With PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
 ///
 /// The digests pin exact f32 bits, and so the platform's `f32::hypot`,
@@ -543,7 +545,7 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
     .unwrap_err()
     .to_string();
     assert!(
-        e.contains("sensor_height is read only by the clutter and columns parts"),
+        e.contains("sensor_height is read only by the clutter, columns and objects parts"),
         "{e}"
     );
     let json = serde_json::to_string(&every_part(1.0)).unwrap();
@@ -564,8 +566,12 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
     );
     assert_eq!(a.matrices, b.matrices);
     for (x, y) in a.parts.iter().zip(&b.parts) {
-        let floor_bound = matches!(x.kind, PartKind::Clutter | PartKind::Columns);
-        assert_eq!(x.values == y.values, !floor_bound, "{:?}", x.kind);
+        assert_eq!(
+            x.values == y.values,
+            !x.kind.measures_from_floor(),
+            "{:?}",
+            x.kind
+        );
     }
     // Given as its true 1.2 m, the floor is where the estimate found it:
     // the two parts stay near the estimate's, nearer than at 1.05 m.
@@ -578,7 +584,7 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
     )
     .unwrap();
     for ((x, y), z) in a.parts.iter().zip(&b.parts).zip(&true_height.parts) {
-        if matches!(x.kind, PartKind::Clutter | PartKind::Columns) {
+        if x.kind.measures_from_floor() {
             let (off, right) = (
                 parts_distance(&x.values, &y.values),
                 parts_distance(&x.values, &z.values),

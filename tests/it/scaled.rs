@@ -135,24 +135,34 @@ fn a_scaled_model_keeps_the_weights_of_its_scans() {
     assert!(right >= 9, "{right} of 12 members in their own category");
 
     // A model written before the `iron` part kind holds seven part
-    // weights: it loads, the new kind at 0, and is the same model; more
-    // kinds than this version knows, or fewer than seven, are refused.
+    // weights, one written before `objects` eight: both load, the newer
+    // kinds at 0, and are the same model; more kinds than this version
+    // knows, or fewer than seven, are refused.
     let mut v: serde_json::Value = serde_json::from_str(&model.to_json().unwrap()).unwrap();
-    let iron = PartKind::Iron.index();
-    assert_eq!(iron, MAX_PARTS - 1);
+    let (iron, objects) = (PartKind::Iron.index(), PartKind::Objects.index());
+    assert_eq!((iron, objects), (MAX_PARTS - 2, MAX_PARTS - 1));
     assert_eq!(
-        w.part_weights[iron], 0.0,
-        "no iron part in these parameters"
+        (w.part_weights[iron], w.part_weights[objects]),
+        (0.0, 0.0),
+        "no iron or objects part in these parameters"
     );
+    for earlier in [MAX_PARTS - 1, MAX_PARTS - 2] {
+        v["scaled_weights"]["part_weights"]
+            .as_array_mut()
+            .unwrap()
+            .truncate(earlier);
+        assert_eq!(LabelledModel::from_json(&v.to_string()).unwrap(), model);
+    }
+    let weights = v["scaled_weights"]["part_weights"].as_array_mut().unwrap();
+    weights.extend([1.0.into(), 1.0.into(), 1.0.into()]);
+    let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
+    assert!(e.to_string().contains("10 part weights"), "{e}");
     v["scaled_weights"]["part_weights"]
         .as_array_mut()
         .unwrap()
-        .truncate(MAX_PARTS - 1);
-    assert_eq!(LabelledModel::from_json(&v.to_string()).unwrap(), model);
-    let weights = v["scaled_weights"]["part_weights"].as_array_mut().unwrap();
-    weights.extend([1.0.into(), 1.0.into()]);
+        .truncate(MAX_PARTS - 3);
     let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
-    assert!(e.to_string().contains("9 part weights"), "{e}");
+    assert!(e.to_string().contains("6 part weights"), "{e}");
     v["scaled_weights"]["part_weights"] = serde_json::json!([]);
     let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
     assert!(e.to_string().contains("0 part weights"), "{e}");
