@@ -19,7 +19,6 @@
 //! the rule's verdict.
 
 use placecat::descriptor::DescriptorParams;
-use rayon::prelude::*;
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -99,21 +98,7 @@ fn main() -> Res<()> {
     let mut evaluations = 0;
     let mut objective = |w: &Weights| -> Res<f64> {
         evaluations += 1;
-        let v: Vec<(f64, f64)> = search
-            .par_iter()
-            .map(|s| quick(s, w))
-            .collect::<placecat::Result<_>>()?;
-        let credit = |&(family, sensor): &(&str, &str)| {
-            let row: Vec<&(f64, f64)> = (search.iter().zip(&v))
-                .filter(|(s, _)| (s.family, s.sensor.as_str()) == (family, sensor))
-                .map(|(_, f)| f)
-                .collect();
-            let n = row.len() as f64;
-            let stride = 100.0 * row.iter().map(|f| f.0).sum::<f64>() / n;
-            let best = 100.0 * row.iter().map(|f| f.1).sum::<f64>() / n;
-            (stride.min(CAP) + best.min(CAP)) / 2.0
-        };
-        Ok(keys.iter().map(credit).sum::<f64>() / keys.len() as f64)
+        capped_objective(&search, &keys, w, CAP)
     };
     let start_objective = objective(&start)?;
     eprintln!(
@@ -135,21 +120,12 @@ fn main() -> Res<()> {
             judge: [of(key, JUDGE_SEEDS, 0), of(key, JUDGE_SEEDS, 1)],
         })
         .collect();
-    let met = |which: usize| {
-        (rows.iter())
-            .filter(|r| {
-                let f = &r.judge[which];
-                100.0 * f.stride >= TARGET && 100.0 * f.best_of_10 >= TARGET
-            })
-            .count()
+    let judged = |which: usize| {
+        let figures: Vec<Figures> = rows.iter().map(|r| r.judge[which]).collect();
+        against_target(&figures, TARGET)
     };
-    let mean = |which: usize| {
-        (rows.iter())
-            .map(|r| 100.0 * (r.judge[which].stride + r.judge[which].best_of_10) / 2.0)
-            .sum::<f64>()
-            / rows.len() as f64
-    };
-    let (judge_met, judge_mean) = ([met(0), met(1)], [mean(0), mean(1)]);
+    let ((met0, mean0), (met1, mean1)) = (judged(0), judged(1));
+    let (judge_met, judge_mean) = ([met0, met1], [mean0, mean1]);
     let preset = !steps.is_empty() && judge_met[1] > judge_met[0] && judge_mean[1] >= judge_mean[0];
     let out = Out {
         start_weights: start,

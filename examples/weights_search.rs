@@ -33,6 +33,8 @@ mod rounds;
 use rounds::*;
 #[path = "common/seeds.rs"]
 mod seeds;
+// The later rounds' capped objective and judging go unused here.
+#[allow(dead_code)]
 #[path = "common/weight_search.rs"]
 mod weight_search;
 use weight_search::*;
