@@ -367,3 +367,35 @@ pub fn family_table(
         },
     )
 }
+
+/// The rule's figures for `preset` on the room rows of `sets`: the rows
+/// (family and sensor) whose means over the seeds of stride k-means and of
+/// k-means++ best of 10 both reach `target` (%), the mean over the rows of
+/// (stride k-means + best of 10) / 2 (%), and the rows counted.
+#[allow(dead_code)] // the rounds that judge a preset against another
+pub fn room_rows_against_target(
+    sets: &[FamilySet],
+    preset: &str,
+    target: f64,
+) -> (usize, f64, usize) {
+    let mut rows: Vec<(&str, &str)> = (sets.iter())
+        .filter(|s| of_rooms(&s.family))
+        .map(|s| (s.family.as_str(), s.sensor.as_str()))
+        .collect();
+    rows.sort();
+    rows.dedup();
+    let figures = |&(family, sensor): &(&str, &str)| {
+        let row: Vec<&FamilySet> = (sets.iter())
+            .filter(|s| (s.family.as_str(), s.sensor.as_str()) == (family, sensor))
+            .collect();
+        let stride = mean_over(&row, |s| entry(s, preset).map(|e| e.1.stride.accuracy));
+        let best = mean_over(&row, |s| entry(s, preset).map(|e| e.1.best_of_10.accuracy));
+        (100.0 * stride, 100.0 * best)
+    };
+    let all: Vec<(f64, f64)> = rows.iter().map(figures).collect();
+    let met = (all.iter())
+        .filter(|(s, b)| *s >= target && *b >= target)
+        .count();
+    let mean = all.iter().map(|(s, b)| (s + b) / 2.0).sum::<f64>() / all.len() as f64;
+    (met, mean, rows.len())
+}

@@ -92,6 +92,12 @@ fn nearest_scan_is_from_the_same_place_indoor_searched_preset() {
     check(DescriptorParams::indoor_searched());
 }
 
+/// The sixteenth round's preset (indoor_searched plus the objects part).
+#[test]
+fn nearest_scan_is_from_the_same_place_indoor_objects_preset() {
+    check(DescriptorParams::indoor_objects());
+}
+
 /// The presets whose slice and clutter parts changed when a sector's
 /// vertex among returns at the same range stopped depending on the points'
 /// order (the real files' quantised coordinates tie often): their
