@@ -226,7 +226,7 @@ pub const PRESET_NOTES: [(&str, &str); 14] = [
     ),
     (
         "indoor_objects",
-        "indoor_searched plus the objects part (what stands in the room, object by object: footprints, tops, roundness, number): room kinds, office floors and dense sensors; with 16 to 64 beams indoor_searched did better (docs/room-objects.md)",
+        "indoor_searched plus the objects part (what stands in the room, object by object: footprints, tops, roundness, number): room kinds; above indoor_searched on office floors and on schools and wards seen with their own sensor, below it on schools seen with 16 to 64 beams (docs/room-objects.md)",
     ),
 ];
 
