@@ -130,7 +130,7 @@ pub fn hospital_family() -> Family {
     }
 }
 
-/// The room rows of issue 18's rounds 9-15: every family with rooms (the
+/// The room rows of issue 18's rounds 9-16: every family with rooms (the
 /// hospital floors last) with its own sensor, then each of its others.
 #[allow(dead_code)]
 pub fn room_rows() -> Vec<(Family, Sensor)> {

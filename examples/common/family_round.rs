@@ -1,5 +1,6 @@
-// The modules of a round over every family (rounds 9-15: scaled, floor,
-// true_floor, iron, searched, indoor_searched, rooms_searched). Each of
+// The modules of a round over every family (rounds 9-16: scaled, floor,
+// true_floor, iron, searched, indoor_searched, rooms_searched,
+// room_objects). Each of
 // those examples `include!`s this file at its root, so the modules name each other
 // `crate::families` and so on; the paths are relative to this file.
 #[path = "families.rs"]
@@ -26,7 +27,7 @@ use preset_rounds::*;
 use rounds::*;
 use site_rounds::*;
 
-/// A round over every family (rounds 10-15): its seeds checked against
+/// A round over every family (rounds 10-16): its seeds checked against
 /// docs/seeds.md, `added` put after each room family's presets
 /// ([`round_presets`]), then [`every_family_round`], which leaves
 /// `candidates` (no presets) out of the real scans.

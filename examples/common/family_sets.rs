@@ -1,5 +1,5 @@
 //! What the rounds that add a preset or a candidate to every family share
-//! (round 8, `columns.rs`; round 9, `scaled.rs`; rounds 10-15, through
+//! (round 8, `columns.rs`; round 9, `scaled.rs`; rounds 10-16, through
 //! `family_round.rs`): a set's figures for each preset, the table of their
 //! means by family and sensor, the report, the run over every family, and
 //! the candidates (made by a round, not named presets).

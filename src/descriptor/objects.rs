@@ -81,7 +81,8 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     };
     let (tops, seen) = contents(scan, floor, ceiling);
     let objects = objects(&tops);
-    if objects.is_empty() || seen == 0 {
+    // Every object's cells were seen, so `seen` > 0 past this.
+    if objects.is_empty() {
         return empty_channels(&CHANNELS);
     }
     let mut area = vec![0f32; BINS];

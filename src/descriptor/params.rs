@@ -131,12 +131,12 @@ pub struct DescriptorParams {
     #[serde(default, skip_serializing_if = "Scale::is_fixed")]
     pub scale: Scale,
     /// The sensor's height above the floor (m), a constant of the robot:
-    /// when given, the `clutter` and `columns` parts measure heights from
-    /// a floor this far below the sensor; when left out (the default, and
-    /// out of JSON), each scan's floor is estimated from its own points,
-    /// which fails where the floor is not seen (a sparse sensor in a small
-    /// room). Only those two parts read it, so parameters with neither
-    /// refuse it. In JS: `null` when not given.
+    /// when given, the `clutter`, `columns` and `objects` parts measure
+    /// heights from a floor this far below the sensor; when left out (the
+    /// default, and out of JSON), each scan's floor is estimated from its
+    /// own points, which fails where the floor is not seen (a sparse sensor
+    /// in a small room). Only those parts read it, so parameters with none
+    /// of them refuse it. In JS: `null` when not given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[cfg_attr(target_arch = "wasm32", tsify(type = "number | null"))]
     pub sensor_height: Option<f64>,
@@ -655,7 +655,7 @@ impl DescriptorParams {
         }
         if !self.parts.iter().any(|p| p.kind.measures_from_floor()) {
             return invalid(
-                "sensor_height is read only by the clutter, columns and objects parts, and these parameters have none of them (presets indoor_clutter and indoor_columns have them)",
+                "sensor_height is read only by the clutter, columns and objects parts, and these parameters have none of them (presets indoor_clutter, indoor_columns, indoor_searched and indoor_objects have them)",
             );
         }
         Ok(())

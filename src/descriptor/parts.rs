@@ -67,7 +67,7 @@ impl PartKind {
     ];
 
     /// Position in [`PartKind::ALL`].
-    pub fn index(self) -> usize {
+    pub const fn index(self) -> usize {
         self as usize
     }
 

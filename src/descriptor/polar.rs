@@ -21,7 +21,7 @@ pub struct PolarScan<'a> {
     /// [`slice::sector_points_of`], made once.
     polygon: OnceCell<Option<Vec<[f64; 2]>>>,
     /// The floor and ceiling heights, found once for the parts that
-    /// measure from them (`clutter` and `columns`).
+    /// measure from them (`clutter`, `columns` and `objects`).
     floor_and_ceiling: OnceCell<Option<(f32, f32)>>,
     /// The floor's height relative to the sensor when it is known
     /// (`-sensor_height`), in place of the estimate.

@@ -408,7 +408,8 @@ fn above_the_matrix_limit_parts_presets_cluster_as_below_it() {
 /// With PLACECAT_WRITE_PARTS_DIGESTS=1 the test writes the file instead.
 ///
 /// The digests pin exact f32 bits, and so the platform's `f32::hypot`,
-/// `f32::atan2` and `f64::acos` (std calls the C library's libm): the
+/// `f32::atan2`, `f64::acos` and (objects) `f32::log10` (std calls the
+/// C library's libm): the
 /// fixture was recorded on x86-64 Linux (glibc); another libm (macOS,
 /// musl, wasm32's) may differ in the last bit of an azimuth or a range
 /// and fail this test without any change to placecat. Re-record there
@@ -519,7 +520,7 @@ fn hand_made_distance_weights_are_checked() {
 /// `sensor_height` is the sensor's height above the floor: refused unless
 /// in (0, 20] m, out of JSON when not given (so earlier parameters files
 /// keep their bytes) and read back when given, and it moves only the
-/// parts that measure from the floor (`clutter`, `columns`): the NDT
+/// parts that measure from the floor (`clutter`, `columns`, `objects`): the NDT
 /// histogram and the other parts stay bit for bit the same.
 #[test]
 fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
@@ -574,7 +575,8 @@ fn a_given_sensor_height_moves_only_the_parts_that_measure_from_the_floor() {
         );
     }
     // Given as its true 1.2 m, the floor is where the estimate found it:
-    // the two parts stay near the estimate's, nearer than at 1.05 m.
+    // the parts that measure from it stay near the estimate's, nearer
+    // than at 1.05 m.
     let true_height = describe(
         &pts,
         &DescriptorParams {

@@ -92,7 +92,8 @@ fn nearest_scan_is_from_the_same_place_indoor_searched_preset() {
     check(DescriptorParams::indoor_searched());
 }
 
-/// The sixteenth round's preset (indoor_searched plus the objects part).
+/// The sixteenth round's preset (indoor_searched plus the objects part):
+/// 18 of 18 (docs/room-objects.md).
 #[test]
 fn nearest_scan_is_from_the_same_place_indoor_objects_preset() {
     check(DescriptorParams::indoor_objects());

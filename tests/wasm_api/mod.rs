@@ -277,7 +277,7 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     // Every preset has its note, and the presets with parts carry them.
     let notes: js_sys::Array = preset_notes().unwrap().unchecked_into();
     assert_eq!(notes.length() as usize, placecat::descriptor::PRESETS.len());
-    assert_eq!(notes.length(), 13);
+    assert_eq!(notes.length(), 14);
     let hellinger = js_sys::JSON::stringify(&preset_params("outdoor_hellinger").unwrap()).unwrap();
     assert!(String::from(hellinger).contains("\"metric\":\"hellinger\""));
     let warehouse = js_sys::JSON::stringify(&preset_params("warehouse").unwrap()).unwrap();
@@ -288,6 +288,8 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(String::from(columns).contains("\"columns\""));
     let searched = js_sys::JSON::stringify(&preset_params("indoor_searched").unwrap()).unwrap();
     assert!(String::from(searched).contains("\"iron\""));
+    let objects = js_sys::JSON::stringify(&preset_params("indoor_objects").unwrap()).unwrap();
+    assert!(String::from(objects).contains("\"objects\""));
     let bad = js_sys::JSON::parse(r#"{"voxel_size": -2}"#).unwrap();
     let e = message(validate_params(bad, None).err().unwrap());
     assert!(e.contains("voxel_size"), "{e}");

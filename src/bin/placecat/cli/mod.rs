@@ -61,9 +61,10 @@ enum Command {
         #[arg(long)]
         params: Option<PathBuf>,
         /// The sensor's height above the floor in metres, a constant of the
-        /// robot: the clutter and columns parts then measure heights from a
-        /// floor that far below the sensor instead of each scan's own
-        /// estimate (as "sensor_height" in --params; this flag wins).
+        /// robot: the clutter, columns and objects parts then measure
+        /// heights from a floor that far below the sensor instead of each
+        /// scan's own estimate (as "sensor_height" in --params; this flag
+        /// wins).
         #[arg(long, value_name = "M")]
         sensor_height: Option<f64>,
         /// Files or folders, and ROS bags (.bag, .mcap). Folders are
