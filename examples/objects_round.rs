@@ -128,24 +128,17 @@ fn main() -> Res<()> {
 
     // Every row, both weightings, the harness's figures on both seed sets.
     let other = candidate.unwrap_or(start);
-    let figures = both(&sets, &start, &other)?;
-    let of = |key, seeds: &[u64], which| row_figures(&sets, &figures, key, seeds, which);
-    let rows: Vec<RowOut> = (keys.iter())
-        .map(|&key| RowOut {
-            family: key.0.into(),
-            sensor: key.1.into(),
-            choose: [of(key, CHOOSE_SEEDS, 0), of(key, CHOOSE_SEEDS, 1)],
-            judge: [of(key, JUDGE_SEEDS, 0), of(key, JUDGE_SEEDS, 1)],
+    let judged = judge_both(&sets, (&start, &other), (CHOOSE_SEEDS, JUDGE_SEEDS), TARGET)?;
+    let rows: Vec<RowOut> = (judged.rows.iter())
+        .map(|&((family, sensor), choose, judge)| RowOut {
+            family: family.into(),
+            sensor: sensor.into(),
+            choose,
+            judge,
         })
         .collect();
-    let judged = |which: usize| {
-        let figures: Vec<Figures> = rows.iter().map(|r| r.judge[which]).collect();
-        against_target(&figures, TARGET)
-    };
-    let ((met0, mean0), (met1, mean1)) = (judged(0), judged(1));
-    let (judge_met, judge_mean) = ([met0, met1], [mean0, mean1]);
-    let preset =
-        candidate.is_some() && judge_met[1] > judge_met[0] && judge_mean[1] >= judge_mean[0];
+    let preset = candidate.is_some() && judged.second_wins();
+    let (judge_met, judge_mean) = (judged.met, judged.mean);
     let out = Out {
         start_weights: start,
         start_objective,
@@ -190,15 +183,12 @@ fn render(o: &Out, described: f64) -> Res<String> {
         ("Seeds 7-9 (judging)", true),
         ("Seeds 1-6 (choosing)", false),
     ] {
-        writeln!(t, "## {title}\n")?;
-        writeln!(t, "Mean over the seeds, `{START}` -> the candidate.\n")?;
-        writeln!(t, "| row | stride k-means | best of 10 | room-level 1-NN |")?;
-        writeln!(t, "|---|---|---|---|")?;
-        for r in &o.rows {
+        let lead = format!("Mean over the seeds, `{START}` -> the candidate.");
+        let rows = (o.rows.iter()).map(|r| {
             let f = if judge { &r.judge } else { &r.choose };
-            writeln!(t, "| {}, {} | {} |", r.family, r.sensor, cells(f))?;
-        }
-        writeln!(t)?;
+            (r.family.as_str(), r.sensor.as_str(), f)
+        });
+        figures_table(&mut t, title, &lead, rows)?;
     }
     Ok(t)
 }

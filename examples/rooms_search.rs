@@ -110,23 +110,17 @@ fn main() -> Res<()> {
     })?;
 
     // Every row, both weightings, the harness's figures on both seed sets.
-    let figures = both(&sets, &start, &w)?;
-    let of = |key, seeds: &[u64], which| row_figures(&sets, &figures, key, seeds, which);
-    let rows: Vec<RowOut> = (keys.iter())
-        .map(|&key| RowOut {
-            family: key.0.into(),
-            sensor: key.1.into(),
-            search: [of(key, &search_seeds, 0), of(key, &search_seeds, 1)],
-            judge: [of(key, JUDGE_SEEDS, 0), of(key, JUDGE_SEEDS, 1)],
+    let judged = judge_both(&sets, (&start, &w), (&search_seeds, JUDGE_SEEDS), TARGET)?;
+    let rows: Vec<RowOut> = (judged.rows.iter())
+        .map(|&((family, sensor), search, judge)| RowOut {
+            family: family.into(),
+            sensor: sensor.into(),
+            search,
+            judge,
         })
         .collect();
-    let judged = |which: usize| {
-        let figures: Vec<Figures> = rows.iter().map(|r| r.judge[which]).collect();
-        against_target(&figures, TARGET)
-    };
-    let ((met0, mean0), (met1, mean1)) = (judged(0), judged(1));
-    let (judge_met, judge_mean) = ([met0, met1], [mean0, mean1]);
-    let preset = !steps.is_empty() && judge_met[1] > judge_met[0] && judge_mean[1] >= judge_mean[0];
+    let preset = !steps.is_empty() && judged.second_wins();
+    let (judge_met, judge_mean) = (judged.met, judged.mean);
     let out = Out {
         start_weights: start,
         found_weights: w,
@@ -165,16 +159,12 @@ fn render(o: &Out, described: f64) -> Res<String> {
         ("Seeds 7-9 (judging)", true),
         ("The search's own 21 seeds", false),
     ] {
-        writeln!(t, "## {title}\n")?;
-        writeln!(t, "Mean over the seeds, `{START}` -> found weights.\n")?;
-        writeln!(t, "| row | stride k-means | best of 10 | room-level 1-NN |")?;
-        writeln!(t, "|---|---|---|---|")?;
-        for r in &o.rows {
+        let lead = format!("Mean over the seeds, `{START}` -> found weights.");
+        let rows = (o.rows.iter()).map(|r| {
             let f = if judge { &r.judge } else { &r.search };
-            let (family, sensor) = (&r.family, &r.sensor);
-            writeln!(t, "| {family}, {sensor} | {} |", cells(f))?;
-        }
-        writeln!(t)?;
+            (r.family.as_str(), r.sensor.as_str(), f)
+        });
+        figures_table(&mut t, title, &lead, rows)?;
     }
     Ok(t)
 }

@@ -399,3 +399,55 @@ pub fn room_rows_against_target(
     let mean = all.iter().map(|(s, b)| (s + b) / 2.0).sum::<f64>() / all.len() as f64;
     (met, mean, rows.len())
 }
+
+/// A preset against another on the room rows of `sets`
+/// ([`room_rows_against_target`]): rows meeting the target and the mean,
+/// the preset's then the other's, and the rows counted.
+#[allow(dead_code)] // rounds 16 and 17
+pub struct Standing<'a> {
+    pub names: [&'a str; 2],
+    pub met: [usize; 2],
+    pub mean: [f64; 2],
+    pub rows: usize,
+}
+
+#[allow(dead_code)] // rounds 16 and 17
+impl<'a> Standing<'a> {
+    pub fn of(sets: &[FamilySet], (preset, against): (&'a str, &'a str), target: f64) -> Self {
+        let (met, mean, rows) = room_rows_against_target(sets, preset, target);
+        let (met_against, mean_against, _) = room_rows_against_target(sets, against, target);
+        Standing {
+            names: [preset, against],
+            met: [met, met_against],
+            mean: [mean, mean_against],
+            rows,
+        }
+    }
+
+    /// The withdrawal rule of rounds 16 and 17: the preset stays unless it
+    /// meets the target in fewer rows than the other or its mean is lower.
+    pub fn stays(&self) -> bool {
+        self.met[0] >= self.met[1] && self.mean[0] >= self.mean[1]
+    }
+}
+
+/// "`P` meets the target in N rows with a mean of M %, `Q` in ...: the
+/// preset stays."
+impl std::fmt::Display for Standing<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        let [p, q] = self.names;
+        write!(
+            f,
+            "`{p}` meets the target in {} rows with a mean of {:.1} %, `{q}` in {} with {:.1} %: {}",
+            self.met[0],
+            self.mean[0],
+            self.met[1],
+            self.mean[1],
+            if self.stays() {
+                "the preset stays"
+            } else {
+                "the preset is withdrawn"
+            }
+        )
+    }
+}

@@ -263,6 +263,80 @@ pub fn against_target(rows: &[Figures], target: f64) -> (usize, f64) {
     (met, mean)
 }
 
+/// A row: (family, sensor).
+pub type RowKey<'a> = (&'a str, &'a str);
+/// Figures of two weightings, the first then the second.
+pub type Pair = [Figures; 2];
+
+/// Two weightings' harness figures ([`both`]) row by row, on the seeds
+/// that chose the second (`fitted`) and on the seeds that judge it, and on
+/// the latter [`against_target`] for each: what the fifteenth and
+/// sixteenth rounds' decisions read.
+pub struct Judged<'a> {
+    /// Each row (family, sensor), its figures on the fitted seeds, then
+    /// on the judging seeds; each pair the first weighting, then the
+    /// second.
+    pub rows: Vec<(RowKey<'a>, Pair, Pair)>,
+    /// On the judging seeds, per weighting: rows meeting the target, and
+    /// the mean over the rows of (stride k-means + best of 10) / 2 (%).
+    pub met: [usize; 2],
+    pub mean: [f64; 2],
+}
+
+impl Judged<'_> {
+    /// The rounds' rule: the second weighting meets the target in more
+    /// rows, and its mean is not lower.
+    pub fn second_wins(&self) -> bool {
+        self.met[1] > self.met[0] && self.mean[1] >= self.mean[0]
+    }
+}
+
+/// [`Judged`] for weightings `a` and `b` over every row of `sets`.
+pub fn judge_both<'a>(
+    sets: &'a [Set],
+    (a, b): (&Weights, &Weights),
+    (fitted, judging): (&[u64], &[u64]),
+    target: f64,
+) -> Res<Judged<'a>> {
+    let figures = both(sets, a, b)?;
+    let of = |key, seeds: &[u64], which| row_figures(sets, &figures, key, seeds, which);
+    let rows: Vec<_> = (row_keys(sets).into_iter())
+        .map(|key| {
+            let pair = |seeds: &[u64]| [of(key, seeds, 0), of(key, seeds, 1)];
+            (key, pair(fitted), pair(judging))
+        })
+        .collect();
+    let judged = |which: usize| {
+        let figures: Vec<Figures> = rows.iter().map(|r| r.2[which]).collect();
+        against_target(&figures, target)
+    };
+    let ((met0, mean0), (met1, mean1)) = (judged(0), judged(1));
+    Ok(Judged {
+        rows,
+        met: [met0, met1],
+        mean: [mean0, mean1],
+    })
+}
+
+/// A report's table of rows' figures for two weightings ([`cells`]), under
+/// `## title` and a line saying which two.
+pub fn figures_table<'a>(
+    t: &mut String,
+    title: &str,
+    lead: &str,
+    rows: impl Iterator<Item = (&'a str, &'a str, &'a [Figures; 2])>,
+) -> std::fmt::Result {
+    use std::fmt::Write;
+    writeln!(t, "## {title}\n")?;
+    writeln!(t, "{lead}\n")?;
+    writeln!(t, "| row | stride k-means | best of 10 | room-level 1-NN |")?;
+    writeln!(t, "|---|---|---|---|")?;
+    for (family, sensor, f) in rows {
+        writeln!(t, "| {family}, {sensor} | {} |", cells(f))?;
+    }
+    writeln!(t)
+}
+
 /// Coordinate ascent from `start`: for each weight in turn, its five
 /// trials (multiples of a weight above 0, fixed values for a weight 0),
 /// one kept, in order, if it beats the best objective so far (the kept

@@ -131,9 +131,10 @@ fn contents(scan: &PolarScan, floor: f32, ceiling: f32) -> (FxHashMap<Cell, f32>
         if !(is_finite(p) && scan.range(i) < NEAR) {
             continue;
         }
-        seen.insert(cell(p));
+        let c = cell(p);
+        seen.insert(c);
         if in_band(p) && scan.range(i) < WALL_SHARE * wall[scan.sector(i, SECTORS)] {
-            let top = tops.entry(cell(p)).or_insert(f32::MIN);
+            let top = tops.entry(c).or_insert(f32::MIN);
             *top = top.max(p[2] - floor);
         }
     }
