@@ -344,6 +344,15 @@ fn distances_and_clustering(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("dbscan", n), &m, |b, m| {
             b.iter(|| Dbscan::fit(m, &DbscanParams::new(0.3, 4)).unwrap().len())
         });
+        // Its dense eigen-decomposition grows with n³: spectral::MAX_SCANS.
+        g.bench_with_input(BenchmarkId::new("spectral_k5", n), &m, |b, m| {
+            b.iter(|| {
+                Spectral::fit(m, &SpectralParams::new(5))
+                    .unwrap()
+                    .labels
+                    .len()
+            })
+        });
     }
     g.finish();
 }

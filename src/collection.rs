@@ -8,7 +8,8 @@ use crate::cluster::choose_k::{self, Choice, ChooseKParams, Clusterer, Method, D
 use crate::cluster::hkmeans::HkMeansParams;
 use crate::cluster::{
     medoids, medoids_by, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams,
-    KMeansResult, KMedoids, KMedoidsParams, KMedoidsResult, Tree,
+    KMeansResult, KMedoids, KMedoidsParams, KMedoidsResult, Spectral, SpectralParams,
+    SpectralResult, Tree,
 };
 use crate::descriptor::{Descriptor, DescriptorParams};
 use crate::distance::{DistanceMatrix, DistanceOptions, Space};
@@ -343,6 +344,14 @@ impl Collection {
         self.check_nonempty()?;
         let (space, matrix) = self.space_and_matrix()?;
         KMedoids::fit(space, matrix, params)
+    }
+
+    /// Spectral clustering on the Delta matrix (at most
+    /// [`spectral::MAX_SCANS`](crate::cluster::spectral::MAX_SCANS) scans).
+    pub fn spectral(&mut self, params: &SpectralParams) -> Result<SpectralResult> {
+        self.check_nonempty()?;
+        crate::cluster::spectral::check_size(self.len())?;
+        Spectral::fit(self.matrix()?, params)
     }
 
     /// DBSCAN on the Delta matrix: labels, -1 for noise.

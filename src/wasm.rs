@@ -9,7 +9,7 @@
 
 use crate::cluster::choose_k;
 use crate::cluster::hkmeans::HkMeansParams;
-use crate::cluster::{self, DbscanParams, KMeansParams, KMedoidsParams, Seeding};
+use crate::cluster::{self, DbscanParams, KMeansParams, KMedoidsParams, Seeding, SpectralParams};
 use crate::collection::{category_names, merge_params, Collection, MATRIX_LIMIT};
 use crate::descriptor::{Descriptor, DescriptorParams};
 use crate::distance::DistanceMatrix;

@@ -143,6 +143,11 @@ class Collection:
         restarts, restart: the cheapest of `restarts` k-means runs (1: the
         paper's single run; at most 1000)."""
     def kmedoids(self, k: int, seed: int = 0) -> Dict[str, Any]: ...
+    def spectral(
+        self, k: int, seed: int = 0, restarts: int = 10, neighbours: int = 7
+    ) -> Dict[str, Any]:
+        """Spectral clustering on the Delta matrix (at most 2000 scans):
+        labels, eigenvalues (the k leading), cost, restart."""
     def hkmeans(self, seed: int = 0, restarts: int = 1) -> Tree:
         """The whole tree; `restarts` 2-means++ trials at every split, the
         cheapest kept (1: the paper's tree; at most 1000)."""

@@ -10,7 +10,9 @@ use crate::PlacecatError;
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike1, PyArrayMethods};
 use placecat::cluster::choose_k::{ChooseKParams, Clusterer};
 use placecat::cluster::hkmeans::{Cut, HkMeansParams};
-use placecat::cluster::{DbscanParams, KMeansParams, KMedoidsParams, Seeding, Tree};
+use placecat::cluster::{
+    DbscanParams, KMeansParams, KMedoidsParams, Seeding, SpectralParams, Tree,
+};
 use placecat::collection::category_names;
 use placecat::{Collection, DescriptorParams};
 use pyo3::prelude::*;
@@ -207,6 +209,38 @@ impl PyCollection {
         let out = PyDict::new(py);
         out.set_item("labels", labels_array(py, r.labels))?;
         out.set_item("medoids", r.medoids)?;
+        Ok(out)
+    }
+
+    /// Spectral clustering on the Delta matrix (Ng, Jordan and Weiss, with
+    /// Zelnik-Manor and Perona's local scale; at most 2000 scans): a dict
+    /// of labels, eigenvalues (the k leading), cost and restart.
+    /// `restarts`: runs of k-means on the embedded scans, the cheapest
+    /// kept; `neighbours`: which nearest neighbour sets a scan's scale.
+    #[pyo3(signature = (k, seed=0, restarts=10, neighbours=7))]
+    fn spectral<'py>(
+        &mut self,
+        py: Python<'py>,
+        k: usize,
+        seed: u64,
+        restarts: usize,
+        neighbours: usize,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let inner = &mut self.inner;
+        let params = SpectralParams::new(k)
+            .seed(seed)
+            .restarts(restarts)
+            .neighbours(neighbours);
+        let r = py.detach(|| inner.spectral(&params)).map_err(core_err)?;
+        let out = PyDict::new(py);
+        out.set_item("labels", labels_array(py, r.labels))?;
+        out.set_item("k", k)?;
+        out.set_item("seed", seed)?;
+        out.set_item("neighbours", neighbours)?;
+        out.set_item("restarts", restarts)?;
+        out.set_item("restart", r.restart)?;
+        out.set_item("eigenvalues", r.eigenvalues)?;
+        out.set_item("cost", r.cost)?;
         Ok(out)
     }
 

@@ -62,6 +62,32 @@ def test_kmeans_restarts_equal_the_cli(described, parity_files, tmp_path):
     assert (one["cost"], ten["cost"]) == (pytest.approx(4.0403, abs=1e-4), pytest.approx(3.7884, abs=1e-4))
 
 
+def test_spectral_equals_the_cli_and_a_numpy_recomputation(described, parity_files, tmp_path):
+    """Spectral clustering gives the CLI's labels, and its eigenvalues are
+    those numpy finds from the Delta matrix by the same steps (the 7th
+    neighbour's scale, the degree-normalised affinity)."""
+    cli_describe(parity_files, tmp_path / "d.json")
+    c = placecat.Collection(described)
+    r = c.spectral(4, seed=3)
+    cli = json.loads(
+        run_cli("cluster", tmp_path / "d.json", "--method", "spectral", "--k", "4", "--seed", "3", "-o", "-").stdout
+    )
+    assert r["labels"].dtype == np.int32 and r["labels"].tolist() == cli["labels"]
+    assert (cli["restarts"], cli["neighbours"], cli["categories"]) == (10, 7, 4)
+    assert r["restart"] == cli["restart"] and r["cost"] == pytest.approx(cli["cost"], rel=1e-12)
+    assert sorted(set(cli["labels"])) == [0, 1, 2, 3]
+    d = c.delta_matrix().astype(np.float64)
+    n = len(d)
+    scale = np.sort(d + np.diag(np.full(n, np.inf)), axis=1)[:, 6]
+    a = np.exp(-(d**2) / np.outer(scale, scale))
+    np.fill_diagonal(a, 0.0)
+    degree = a.sum(axis=1)
+    leading = np.linalg.eigvalsh(a / np.sqrt(np.outer(degree, degree)))[::-1][:4]
+    np.testing.assert_allclose(r["eigenvalues"], leading, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(cli["eigenvalues"], leading, rtol=0, atol=1e-9)
+    assert leading[0] == pytest.approx(1.0, abs=1e-12)
+
+
 def test_descriptors_and_delta_matrix_equal_the_cli(described, parity_files, tmp_path):
     out = cli_describe(parity_files, tmp_path / "d.json")
     assert len(out["files"]) == len(described)

@@ -12,6 +12,7 @@ pub mod kmeans;
 pub mod kmedoids;
 mod lloyd;
 mod medoid;
+pub mod spectral;
 
 /// The space clustering works in lives with the distance it measures
 /// (`crate::distance`); re-exported here, where most callers look for it.
@@ -21,6 +22,7 @@ pub use hkmeans::{HierarchicalKMeans, Tree, TreeNode};
 pub use kmeans::{KMeans, KMeansParams, KMeansResult, Seeding, MAX_RESTARTS};
 pub use kmedoids::{KMedoids, KMedoidsParams, KMedoidsResult};
 pub use medoid::{medoids, medoids_by};
+pub use spectral::{Spectral, SpectralParams, SpectralResult};
 
 /// Parameters checked once into the validated form an algorithm requires,
 /// in the manner of linfa's `ParamGuard`: `params.check()?` gives the

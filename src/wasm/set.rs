@@ -101,6 +101,28 @@ impl DescriptorSet {
                 .kmedoids(&KMedoidsParams::new(count("k", k)?).seed(seed_of(seed)?))?,
         )
     }
+    /// Spectral clustering on the Delta matrix (Ng, Jordan and Weiss, with
+    /// Zelnik-Manor and Perona's local scale): `{labels, eigenvalues, cost,
+    /// restart}`. `restarts`: runs of k-means on the embedded scans, the
+    /// cheapest kept (10 if left out); `neighbours`: which nearest
+    /// neighbour sets a scan's scale (7 if left out). At most 2000 scans.
+    #[wasm_bindgen(unchecked_return_type = "SpectralResult")]
+    pub fn spectral(
+        &mut self,
+        k: f64,
+        seed: f64,
+        restarts: Option<f64>,
+        neighbours: Option<f64>,
+    ) -> WasmResult<JsValue> {
+        let mut params = SpectralParams::new(count("k", k)?).seed(seed_of(seed)?);
+        if let Some(r) = restarts {
+            params = params.restarts(count("restarts", r)?);
+        }
+        if let Some(n) = neighbours {
+            params = params.neighbours(count("neighbours", n)?);
+        }
+        to_js(&self.set.spectral(&params)?)
+    }
     /// DBSCAN (Delta <= eps are neighbours; minPoints counts the scan itself).
     /// Labels as Int32Array, -1 for noise.
     pub fn dbscan(

@@ -406,6 +406,47 @@ fn simulate_describe_cluster_evaluate_round_trip() {
     assert_eq!(hk["categories"], 5);
     assert_eq!(hk["tree"]["linkage"].as_array().unwrap().len(), 14);
     assert_eq!(hk["restarts"], 1, "one 2-means run per split unless asked");
+    // Spectral clustering: its keys, ten k-means runs and the 7th
+    // neighbour's scale unless asked, the leading eigenvalue 1.
+    let sp = run(
+        &["--method", "spectral", "--k", "5", "--seed", "1"],
+        "sp.json",
+    );
+    assert_eq!(
+        (&sp["method"], &sp["categories"], &sp["k"], &sp["seed"]),
+        (&"spectral".into(), &5.into(), &5.into(), &1.into())
+    );
+    assert_eq!(
+        (&sp["restarts"], &sp["neighbours"]),
+        (&10.into(), &7.into())
+    );
+    let values: Vec<f64> = serde_json::from_value(sp["eigenvalues"].clone()).unwrap();
+    assert_eq!(values.len(), 5);
+    assert!((values[0] - 1.0).abs() < 1e-9, "{values:?}");
+    assert!(values.windows(2).all(|w| w[1] <= w[0]), "{values:?}");
+    let labels: Vec<i32> = serde_json::from_value(sp["labels"].clone()).unwrap();
+    assert_eq!(labels.len(), 15);
+    assert_eq!(labels.iter().max(), Some(&4));
+    let one_run = run(
+        &[
+            "--method",
+            "spectral",
+            "--k",
+            "5",
+            "--seed",
+            "1",
+            "--restarts",
+            "1",
+            "--neighbours",
+            "3",
+        ],
+        "sp1.json",
+    );
+    assert_eq!(
+        (&one_run["restarts"], &one_run["restart"]),
+        (&1.into(), &0.into())
+    );
+    assert_eq!(one_run["neighbours"], 3);
     // Ten trial splits per node: another tree than seed 1's single runs
     // (measured: its lowest merge joins scans 10 and 11, not 9 and 11).
     let hk10 = run(
@@ -514,11 +555,28 @@ fn simulate_describe_cluster_evaluate_round_trip() {
                 "--restarts",
                 "3",
             ][..],
-            "--restarts is for --method kmeans or hkmeans, not dbscan",
+            "--restarts is for --method kmeans, hkmeans or spectral, not dbscan",
         ),
         (
             &["--method", "hkmeans", "--restarts", "0"][..],
             "2-means runs per split",
+        ),
+        (
+            &["--method", "kmeans", "--k", "2", "--neighbours", "3"][..],
+            "--neighbours is for --method spectral, not kmeans",
+        ),
+        (&["--method", "spectral"][..], "--method spectral needs --k"),
+        (
+            &["--method", "spectral", "--k", "auto"][..],
+            "auto is for kmeans and hkmeans",
+        ),
+        (
+            &["--method", "spectral", "--k", "2", "--neighbours", "0"][..],
+            "neighbours must be at least 1",
+        ),
+        (
+            &["--method", "spectral", "--k", "2", "--restarts", "0"][..],
+            "runs of k-means on the embedded scans",
         ),
     ] {
         let e = fails(

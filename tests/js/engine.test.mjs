@@ -86,6 +86,30 @@ test('hierarchical k-means: a plain tree, cuts into k and at a threshold, medoid
   e.dispose();
 });
 
+test('spectral clustering on the raw DescriptorSet: plain labels and eigenvalues, errors as Errors', () => {
+  const truth = scans.map((s) => s.label);
+  scoped(new wasm.DescriptorSet(params, undefined), (set) => {
+    for (const s of scans) set.addJson(s.descriptorJson);
+    const r = set.spectral(8, 0);
+    assert.ok(plain(r), 'plain data');
+    assert.equal(r.labels.length, 40);
+    assert.equal(new Set(r.labels).size, 8);
+    assert.equal(r.labels[0], 0, 'numbered in order of appearance');
+    assert.equal(r.eigenvalues.length, 8);
+    assert.ok(Math.abs(r.eigenvalues[0] - 1) < 1e-9 && r.eigenvalues.every((v, i) => i === 0 || v <= r.eigenvalues[i - 1]), String(r.eigenvalues));
+    assert.ok(r.restart >= 0 && r.restart < 10 && r.cost >= 0);
+    // The same seed, the same labels; one k-means run is a choice too.
+    assert.deepEqual(set.spectral(8, 0).labels, r.labels);
+    assert.equal(set.spectral(8, 0, 1, 7).restart, 0);
+    const accuracy = wasm.DescriptorSet.evaluate(truth, Int32Array.from(r.labels)).accuracy;
+    assert.ok(accuracy >= 0.95, `accuracy ${accuracy} (1 measured)`);
+    assert.throws(() => set.spectral(41, 0), /^Error: invalid parameter: k = 41 is more than the 40 scans/);
+    assert.throws(() => set.spectral(2, 0, 0), /restarts must be at least 1/);
+    assert.throws(() => set.spectral(2, 0, undefined, 0), /neighbours must be at least 1/);
+    assert.throws(() => set.spectral(2.5, 0), /k must be a whole number, got 2.5/);
+  });
+});
+
 test('k-means, DBSCAN and the sweep return plain labels and points', () => {
   const e = new Engine(wasm);
   e.load(params, scans.map((s) => s.descriptorJson));

@@ -10,6 +10,7 @@
 //! - `placecat distances DESCRIPTORS.json [-o OUT.csv]`
 //! - `placecat cluster DESCRIPTORS.json --method kmeans --k K --seeding random|stride|plusplus --seed S [--restarts N] -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method hkmeans [--threshold T | --categories K|auto] --seed S [--restarts N] -o OUT.json`
+//! - `placecat cluster DESCRIPTORS.json --method spectral --k K [--seed S] [--restarts N] [--neighbours M] -o OUT.json` (at most 2000 scans)
 //! - `placecat cluster DESCRIPTORS.json --method dbscan --eps E --min-points C -o OUT.json`
 //! - `placecat cluster ... --format csv -o OUT.csv` (`file,category` rows; also for any `*.csv` output)
 //! - `placecat evaluate OUT.json --truth labels.csv`

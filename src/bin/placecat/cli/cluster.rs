@@ -5,7 +5,7 @@ use super::names::Labels;
 use super::progress;
 use placecat::cluster::choose_k::{ChooseKParams, Clusterer};
 use placecat::cluster::{
-    hkmeans::HkMeansParams, DbscanParams, KMeansParams, KMedoidsParams, Seeding,
+    hkmeans::HkMeansParams, DbscanParams, KMeansParams, KMedoidsParams, Seeding, SpectralParams,
 };
 use placecat::io::csv;
 use placecat::io::write::{self, PlyEncoding};
@@ -19,11 +19,12 @@ use std::process::ExitCode;
 /// Options of `placecat cluster`.
 #[derive(clap::Args)]
 pub struct ClusterArgs {
-    /// kmeans, hkmeans, dbscan, kmedoids.
+    /// kmeans, hkmeans, dbscan, kmedoids, spectral.
     #[arg(long)]
     pub method: String,
-    /// kmeans, kmedoids: the number of categories; `auto` (kmeans, the
-    /// default there) chooses it from the data (see `categories` in OUT.json).
+    /// kmeans, kmedoids, spectral: the number of categories; `auto`
+    /// (kmeans, the default there) chooses it from the data (see
+    /// `categories` in OUT.json).
     #[arg(long)]
     pub k: Option<Count>,
     /// k-means seeding: random, stride, plusplus.
@@ -35,10 +36,12 @@ pub struct ClusterArgs {
     /// clustered so. hkmeans: 2-means++ trials at every split of the tree,
     /// the cheapest kept (1: the paper's tree; at most 1000); with
     /// --categories auto the rule's reference trees are built so too.
-    #[arg(long, default_value_t = 1)]
-    pub restarts: usize,
-    /// Seeds k-means, k-medoids, the tree's 2-means splits and the choice
-    /// of K (its reference sets).
+    /// spectral: runs of k-means on the embedded scans (10 unless given).
+    /// [default: 1]
+    #[arg(long)]
+    pub restarts: Option<usize>,
+    /// Seeds k-means, k-medoids, spectral clustering's k-means, the tree's
+    /// 2-means splits and the choice of K (its reference sets).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// hkmeans: cut the tree at this height.
@@ -55,6 +58,10 @@ pub struct ClusterArgs {
     /// dbscan: neighbours of a core scan, itself included.
     #[arg(long = "min-points")]
     pub min_points: Option<usize>,
+    /// spectral: which nearest neighbour sets a scan's local scale
+    /// (Zelnik-Manor and Perona's 7 unless given).
+    #[arg(long)]
+    pub neighbours: Option<usize>,
 }
 
 /// A number of categories given, or `auto`: chosen from the data by the
@@ -87,6 +94,16 @@ fn choice_json(choice: &placecat::cluster::choose_k::Choice) -> Value {
         "scores": choice.scores,
         "one_category": choice.one_category,
     })
+}
+
+/// The number given to `--k` of a method that cannot choose it.
+fn exact_k(k: Option<Count>, method: &str) -> Result<usize> {
+    match need(k, "--k", method)? {
+        Count::Exactly(k) => Ok(k),
+        Count::Auto => Err(Error::InvalidParameter(format!(
+            "--method {method} needs a number for --k (auto is for kmeans and hkmeans)"
+        ))),
+    }
 }
 
 fn need<T>(v: Option<T>, flag: &str, method: &str) -> Result<T> {
@@ -137,12 +154,21 @@ pub fn cluster(
             descriptors.display()
         )));
     }
-    if a.restarts != 1 && !matches!(a.method.as_str(), "kmeans" | "hkmeans") {
+    if a.restarts.is_some_and(|r| r != 1)
+        && !matches!(a.method.as_str(), "kmeans" | "hkmeans" | "spectral")
+    {
         return Err(Error::InvalidParameter(format!(
-            "--restarts is for --method kmeans or hkmeans, not {}",
+            "--restarts is for --method kmeans, hkmeans or spectral, not {}",
             a.method
         )));
     }
+    if a.neighbours.is_some() && a.method != "spectral" {
+        return Err(Error::InvalidParameter(format!(
+            "--neighbours is for --method spectral, not {}",
+            a.method
+        )));
+    }
+    let restarts = a.restarts.unwrap_or(1);
     let files = set.names().to_vec();
     let mut out = json!({ "files": files, "method": a.method });
     match a.method.as_str() {
@@ -152,7 +178,7 @@ pub fn cluster(
                 KMeansParams::new(k)
                     .seeding(seeding)
                     .seed(a.seed)
-                    .restarts(a.restarts)
+                    .restarts(restarts)
             };
             let k = match a.k.unwrap_or(Count::Auto) {
                 Count::Exactly(k) => k,
@@ -174,25 +200,18 @@ pub fn cluster(
             out["iterations"] = json!(r.iterations);
             out["converged"] = json!(r.converged);
             out["cost"] = json!(r.cost);
-            out["restarts"] = json!(a.restarts);
+            out["restarts"] = json!(restarts);
             out["restart"] = json!(r.restart);
         }
         "kmedoids" => {
-            let k =
-                match need(a.k, "--k", "kmedoids")? {
-                    Count::Exactly(k) => k,
-                    Count::Auto => return Err(Error::InvalidParameter(
-                        "--method kmedoids needs a number for --k (auto is for kmeans and hkmeans)"
-                            .into(),
-                    )),
-                };
+            let k = exact_k(a.k, "kmedoids")?;
             let r = set.kmedoids(&KMedoidsParams::new(k).seed(a.seed))?;
             out["labels"] = json!(r.labels);
             out["medoids"] = json!(r.medoids.iter().map(|&i| &files[i]).collect::<Vec<_>>());
         }
         "hkmeans" => {
             // Above the matrix limit the tree is built without the matrix.
-            let hk = HkMeansParams::new(a.seed).restarts(a.restarts);
+            let hk = HkMeansParams::new(a.seed).restarts(restarts);
             let tree = set.hkmeans(&hk)?;
             let cut = match (a.threshold, a.categories) {
                 (Some(t), None) => tree.cut(t)?,
@@ -214,7 +233,7 @@ pub fn cluster(
             out["threshold"] = json!(cut.threshold);
             out["categories"] = json!(cut.nodes.len());
             out["seed"] = json!(a.seed);
-            out["restarts"] = json!(a.restarts);
+            out["restarts"] = json!(restarts);
             out["tree"] = json!({
                 "nodes": tree.nodes.iter().map(|n| json!({"members": n.members, "height": n.height, "children": n.children})).collect::<Vec<Value>>(),
                 "linkage": tree.linkage(),
@@ -229,9 +248,29 @@ pub fn cluster(
             out["eps"] = json!(eps);
             out["min_points"] = json!(c);
         }
+        "spectral" => {
+            let k = exact_k(a.k, "spectral")?;
+            let mut params = SpectralParams::new(k).seed(a.seed);
+            if let Some(r) = a.restarts {
+                params = params.restarts(r);
+            }
+            if let Some(nb) = a.neighbours {
+                params = params.neighbours(nb);
+            }
+            let r = set.spectral(&params)?;
+            out["labels"] = json!(r.labels);
+            out["k"] = json!(k);
+            out["categories"] = json!(k);
+            out["seed"] = json!(a.seed);
+            out["neighbours"] = json!(params.neighbours);
+            out["restarts"] = json!(params.restarts);
+            out["restart"] = json!(r.restart);
+            out["eigenvalues"] = json!(r.eigenvalues);
+            out["cost"] = json!(r.cost);
+        }
         other => {
             return Err(Error::InvalidParameter(format!(
-                "unknown --method {other:?} (kmeans, hkmeans, dbscan, kmedoids)"
+                "unknown --method {other:?} (kmeans, hkmeans, dbscan, kmedoids, spectral)"
             )))
         }
     }

@@ -1,0 +1,295 @@
+//! Issue 18, eighteenth round: spectral clustering (`cluster::spectral`)
+//! of the presets' distance, beside k-means, on every family and sensor of
+//! the seventeenth round.
+//!
+//!     cargo run --release --example spectral_round -- --dev   # seeds 1-6: docs/spectral-dev.json
+//!     cargo run --release --example spectral_round            # test seeds, once: docs/spectral.{json,md}
+//!     ... -- --render   # docs/spectral.md again from the two .json
+//!
+//! The method, the presets and the rule were fixed in docs/seeds.md
+//! ("issue 18, eighteenth round") before any run: spectral clustering
+//! becomes an option whatever the figures; the docs recommend it for room
+//! kinds if on the test seeds, with `indoor_objects`, its mean over the 14
+//! room rows is above k-means++ best of 10's and it is lower than best of
+//! 10 in at most 4 of them. The test run refuses to overwrite its report.
+
+use placecat::cluster::{KMeans, KMeansParams, Seeding, Spectral, SpectralParams};
+use placecat::distance::Space;
+use placecat::*;
+use serde::{Deserialize, Serialize};
+use std::fmt::Write;
+use std::path::{Path, PathBuf};
+
+#[path = "common/families.rs"]
+mod families;
+#[allow(dead_code)]
+#[path = "common/rounds.rs"]
+mod rounds;
+#[path = "common/seeds.rs"]
+mod seeds;
+use families::*;
+use rounds::*;
+
+/// Fixed in docs/seeds.md ("issue 18, eighteenth round") before any run.
+const DEV_SEEDS: &[u64] = &[1, 2, 3, 4, 5, 6];
+const TEST_SEEDS: &[u64] = &[481, 482, 483, 484, 485];
+const ROOM_PRESETS: &[&str] = &["indoor", "indoor_searched", "indoor_objects"];
+const WAREHOUSE_PRESETS: &[&str] = &["indoor", "indoor_plus"];
+const OUTDOOR_PRESETS: &[&str] = &["outdoor", "outdoor_near"];
+/// The preset and the bounds of the rule.
+const PRESET: &str = "indoor_objects";
+const MOST_ROWS_LOWER: usize = 4;
+/// Issue 18's indoor target (%).
+const TARGET: f64 = 85.0;
+
+/// One family, sensor and preset on a round's seeds: each method's figure
+/// on each seed (the randomised ones the mean over clustering seeds 0-9).
+#[derive(Serialize, Deserialize, Clone)]
+struct Row {
+    family: String,
+    sensor: String,
+    preset: String,
+    rooms: bool,
+    stride: Vec<f64>,
+    best_of_10: Vec<f64>,
+    spectral: Vec<f64>,
+    /// The lowest spectral clustering of any clustering seed on each set.
+    spectral_lowest: Vec<f64>,
+    nearest: Vec<f64>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct Report {
+    seeds: Vec<u64>,
+    seconds: f64,
+    rows: Vec<Row>,
+}
+
+impl Row {
+    /// The row's table cells: names, then each method's mean over the seeds.
+    fn cells(&self) -> Vec<String> {
+        let lowest = (self.spectral_lowest.iter().copied()).fold(f64::INFINITY, f64::min);
+        let figures = [&self.stride, &self.best_of_10, &self.spectral];
+        (([&self.family, &self.sensor].map(|s| s.to_string())).into_iter())
+            .chain([format!("`{}`", self.preset)])
+            .chain(figures.map(|v| pct(mean(v))))
+            .chain([pct(lowest), pct(mean(&self.nearest))])
+            .collect()
+    }
+}
+
+fn mean(v: &[f64]) -> f64 {
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+fn presets_of(f: &Family) -> &'static [&'static str] {
+    match f.name {
+        "warehouse" => WAREHOUSE_PRESETS,
+        "outdoor" => OUTDOOR_PRESETS,
+        _ => ROOM_PRESETS,
+    }
+}
+
+fn run(seeds: &[u64]) -> Res<Report> {
+    let t0 = std::time::Instant::now();
+    let mut rows = vec![];
+    for f in families().into_iter().chain([hospital_family()]) {
+        let sensors = std::iter::once(Sensor::Own).chain(f.sensors.iter().copied());
+        for sensor in sensors.collect::<Vec<_>>() {
+            let presets: Vec<String> = presets_of(&f).iter().map(|p| p.to_string()).collect();
+            let mut out: Vec<Row> = (presets.iter())
+                .map(|p| Row {
+                    family: f.name.into(),
+                    sensor: sensor.name(),
+                    preset: p.clone(),
+                    rooms: f.scans_per_room > 1,
+                    stride: vec![],
+                    best_of_10: vec![],
+                    spectral: vec![],
+                    spectral_lowest: vec![],
+                    nearest: vec![],
+                })
+                .collect();
+            for &seed in seeds {
+                let set = describe_set(&f, sensor, seed, &presets)?;
+                for (name, params, descriptors) in &set.presets {
+                    let row = (out.iter_mut())
+                        .find(|r| &r.preset == name)
+                        .ok_or("a preset described that was not asked for")?;
+                    let space = Space::new(descriptors, DistanceOptions::from(params))?;
+                    let k = set.kinds;
+                    let stride =
+                        KMeans::fit(&space, &KMeansParams::new(k).seeding(Seeding::Stride))?;
+                    let best = over_seeds(&set.truth, |s| {
+                        Ok(KMeans::fit(&space, &KMeansParams::new(k).seed(s).restarts(10))?.labels)
+                    })?;
+                    let matrix = space.matrix();
+                    let spectral = over_seeds(&set.truth, |s| {
+                        Ok(Spectral::fit(&matrix, &SpectralParams::new(k).seed(s))?.labels)
+                    })?;
+                    row.stride.push(once(&set.truth, &stride.labels)?.accuracy);
+                    row.best_of_10.push(best.accuracy);
+                    row.spectral.push(spectral.accuracy);
+                    row.spectral_lowest.push(spectral.lowest);
+                    row.nearest
+                        .push(room_level_nn(&matrix, &set.truth, &set.apart));
+                }
+            }
+            for r in &out {
+                eprintln!(
+                    "{} ({:.0} s)",
+                    r.cells().join(" | "),
+                    t0.elapsed().as_secs_f64()
+                );
+            }
+            rows.extend(out.into_iter().filter(|r| !r.stride.is_empty()));
+        }
+    }
+    Ok(Report {
+        seeds: seeds.to_vec(),
+        seconds: t0.elapsed().as_secs_f64(),
+        rows,
+    })
+}
+
+fn docs() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
+}
+
+fn write(name: &str, text: &str) -> Res<()> {
+    let path = docs().join(name);
+    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    eprintln!("wrote docs/{name}");
+    Ok(())
+}
+
+/// The rule of the round, computed on a report's room rows of [`PRESET`].
+struct Rule {
+    rows: usize,
+    spectral: f64,
+    best_of_10: f64,
+    lower: usize,
+}
+
+impl Rule {
+    fn of(r: &Report) -> Rule {
+        let rows: Vec<&Row> = (r.rows.iter())
+            .filter(|x| x.rooms && x.preset == PRESET)
+            .collect();
+        let n = rows.len() as f64;
+        Rule {
+            rows: rows.len(),
+            spectral: rows.iter().map(|x| mean(&x.spectral)).sum::<f64>() / n,
+            best_of_10: rows.iter().map(|x| mean(&x.best_of_10)).sum::<f64>() / n,
+            lower: (rows.iter())
+                .filter(|x| mean(&x.spectral) < mean(&x.best_of_10))
+                .count(),
+        }
+    }
+    fn recommends(&self) -> bool {
+        self.spectral > self.best_of_10 && self.lower <= MOST_ROWS_LOWER
+    }
+}
+
+/// Room rows (of `preset`) where a method's mean reaches the target.
+fn rows_at_target(r: &Report, preset: &str, met: impl Fn(&Row) -> bool) -> usize {
+    (r.rows.iter())
+        .filter(|x| x.rooms && x.preset == preset && met(x))
+        .count()
+}
+
+fn table(o: &mut String, r: &Report) -> Res<()> {
+    writeln!(o, "| family | sensor | preset | stride k-means | k-means++ best of 10 | spectral | lowest spectral | room-level 1-NN |")?;
+    writeln!(o, "|---|---|---|---|---|---|---|---|")?;
+    for x in &r.rows {
+        writeln!(o, "| {} |", x.cells().join(" | "))?;
+    }
+    Ok(())
+}
+
+/// What the round showed, written after its one test run.
+const NOTES: &str = "(Written after the test run.)";
+
+fn render(dev: &Report, test: &Report) -> Res<String> {
+    let mut o = String::new();
+    writeln!(
+        o,
+        "# Spectral clustering beside k-means (issue 18, eighteenth round)\n"
+    )?;
+    writeln!(o, "**Method.** Spectral clustering of each preset's distance (`placecat cluster --method spectral`; `cluster::spectral`): Ng, Jordan and Weiss (NIPS 2001) with the local scale of Zelnik-Manor and Perona (NIPS 2004), the affinity exp(-D(i,j)² / (s_i s_j)) over every pair with s_i the distance of scan i to its 7th nearest other scan, the k leading eigenvectors of the degree-normalised affinity with each scan's row scaled to unit length, then Euclidean k-means with k-means++ seeding, the cheapest of 10 runs. Nothing in it was tuned; no descriptor, weight or preset changes. The rule, fixed in docs/seeds.md before any run: spectral clustering is an option whatever the figures (the defaults stay the paper's); the docs recommend it for room kinds if on the test seeds, with `{PRESET}`, its mean over the 14 room rows is above k-means++ best of 10's and it is lower than best of 10 in at most {MOST_ROWS_LOWER} of them. Issue 18's indoor target names k-means, so rows that reach 85 % with spectral clustering only are reported as such, not as meeting the target.\n")?;
+    let rule = Rule::of(test);
+    writeln!(
+        o,
+        "**The rule, computed** (test seeds, `{PRESET}`, {} room rows): spectral clustering averages {:.1} % against k-means++ best of 10's {:.1} %, and is lower in {} rows: {}.\n",
+        rule.rows,
+        100.0 * rule.spectral,
+        100.0 * rule.best_of_10,
+        rule.lower,
+        if rule.recommends() {
+            "the docs recommend it for room kinds"
+        } else {
+            "it stays an option the docs do not recommend"
+        }
+    )?;
+    for preset in ROOM_PRESETS {
+        let k = rows_at_target(test, preset, |x| {
+            mean(&x.stride) >= TARGET / 100.0 && mean(&x.best_of_10) >= TARGET / 100.0
+        });
+        let s = rows_at_target(test, preset, |x| mean(&x.spectral) >= TARGET / 100.0);
+        writeln!(o, "- `{preset}`: at least 85 % with both k-means in {k} room rows; with spectral clustering in {s}.")?;
+    }
+    writeln!(o, "\nRegenerate with `cargo run --release --example spectral_round -- --dev` (`spectral-dev.json`, {:.0} s) then `cargo run --release --example spectral_round` (test seeds, this file and `spectral.json`, {:.0} s; it refuses to run again once `spectral.json` exists; `-- --render` renders this file from them). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, 45 scans a room set (5 kinds, rooms of 3 scans), 100 a route; k the true number of kinds. Stride k-means runs once; k-means++ best of 10 and spectral clustering with clustering seeds 0-9 (mean; lowest: any single clustering on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", dev.seconds, test.seconds)?;
+    writeln!(o, "## What it shows\n\n{NOTES}\n")?;
+    writeln!(
+        o,
+        "## 1. Test seeds {}-{}\n",
+        TEST_SEEDS[0],
+        TEST_SEEDS[TEST_SEEDS.len() - 1]
+    )?;
+    table(&mut o, test)?;
+    writeln!(
+        o,
+        "\n## 2. Development seeds 1-6 (looked at before the test run)\n"
+    )?;
+    let dev_rule = Rule::of(dev);
+    writeln!(
+        o,
+        "On these seeds, `{PRESET}` over the {} room rows: spectral {:.1} % against best of 10's {:.1} %, lower in {} rows.\n",
+        dev_rule.rows,
+        100.0 * dev_rule.spectral,
+        100.0 * dev_rule.best_of_10,
+        dev_rule.lower
+    )?;
+    table(&mut o, dev)?;
+    Ok(o)
+}
+
+fn main() -> Res<()> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let (dev_json, test_json) = (
+        docs().join("spectral-dev.json"),
+        docs().join("spectral.json"),
+    );
+    if args.iter().any(|a| a == "--dev") {
+        seeds::check_round_seeds(DEV_SEEDS, &[])?;
+        let r = run(DEV_SEEDS)?;
+        return write("spectral-dev.json", &serde_json::to_string_pretty(&r)?);
+    }
+    if !args.iter().any(|a| a == "--render") {
+        seeds::check_round_seeds(DEV_SEEDS, TEST_SEEDS)?;
+        if test_json.exists() {
+            return Err(
+                "docs/spectral.json exists: the test seeds were run once already (use --render)"
+                    .into(),
+            );
+        }
+        if !dev_json.exists() {
+            return Err("run the development seeds first (--dev)".into());
+        }
+        let r = run(TEST_SEEDS)?;
+        write("spectral.json", &serde_json::to_string_pretty(&r)?)?;
+    }
+    let dev: Report = read_json(&dev_json)?;
+    let test: Report = read_json(&test_json)?;
+    write("spectral.md", &render(&dev, &test)?)
+}
