@@ -52,6 +52,19 @@ if (ndtRows.length) {
   const hellinger = rows.find((r) => r.group === 'parts_distance' && r.func === 'delta_matrix_hellinger');
   if (paper && hellinger) lines.push('', `The same NDT histograms under the Hellinger distance (outdoor_hellinger's, docs/hellinger.md): ${(hellinger.seconds * 1e3).toFixed(1)} ms (${(hellinger.seconds / paper.seconds).toFixed(2)}x the paper's).`);
 }
+// Spectral clustering against k-means++ and the tree on the same matrix
+// (src/cluster/spectral: its dense eigen-decomposition grows with n³).
+const spectral = rows.filter((r) => r.group === 'cluster' && r.func === 'spectral_k5');
+if (spectral.length) {
+  lines.push('', '## Spectral clustering against k-means and the tree (same descriptors, same run, one core)', '', '| scans | spectral | k-means++ | tree | spectral / k-means++ | spectral / tree |', '|---|---|---|---|---|---|');
+  for (const r of spectral.sort((a, b) => Number(a.param) - Number(b.param))) {
+    const km = find('kmeans_pp_k5', r.param);
+    const tree = find('hkmeans_tree', r.param);
+    if (!km || !tree) continue;
+    const t = (s) => (s < 1 ? (s * 1e3).toFixed(2) + ' ms' : s.toFixed(2) + ' s');
+    lines.push(`| ${r.param} | ${t(r.seconds)} | ${t(km.seconds)} | ${t(tree.seconds)} | ${(r.seconds / km.seconds).toFixed(0)}x | ${(r.seconds / tree.seconds).toFixed(0)}x |`);
+  }
+}
 const time = (s) => (s < 1e-3 ? (s * 1e6).toFixed(1) + ' µs' : s < 1 ? (s * 1e3).toFixed(2) + ' ms' : s.toFixed(2) + ' s');
 const withBaseline = previous.size > 0;
 lines.push('', '## Every stage', '');

@@ -332,7 +332,9 @@ async function cluster() {
       if (state.cut) return render();
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
-    const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed, m.restarts) : engine.dbscan(m.eps, m.minPoints);
+    const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed, m.restarts)
+      : m.method === 'spectral' ? engine.spectral(m.spK, m.spSeed)
+        : engine.dbscan(m.eps, m.minPoints);
     state = S.withLabels(state, labels, engine.medoids(labels));
   } catch (e) {
     return view.status(e.message);
@@ -431,7 +433,7 @@ async function main() {
   on('apply-advanced', 'click', () => state.inputs.length && describeAll());
   onThinning(() => state.inputs.some((i) => i.bag) && describeAll({ ...state, inputs: rethinned(state.inputs) }));
   on('method', 'change', () => { view.showMethod(); cluster(); });
-  for (const id of ['hk-seed', 'hk-splits', 'k', 'seeding', 'km-seed', 'eps', 'minpts']) on(id, 'change', cluster);
+  for (const id of ['hk-seed', 'hk-splits', 'k', 'seeding', 'km-seed', 'sp-k', 'sp-seed', 'eps', 'minpts']) on(id, 'change', cluster);
   on('threshold', 'change', () => cutTree({ threshold: Math.max(0, Number($('threshold').value) || 0) }, 'threshold'));
   on('categories', 'change', () => cutTree({ k: Number($('categories').value) }, 'categories'));
   on('sweep', 'click', runSweep);

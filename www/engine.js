@@ -210,6 +210,15 @@ export class Engine {
     return Int32Array.from(this.set.get('scans').kmeans(k, seeding, seed, restarts).labels);
   }
 
+  /**
+   * Spectral clustering (the cheapest of ten k-means runs on the embedded scans;
+   * the wasm side refuses more than 2000 scans).
+   * @param {number} k @param {number} seed @returns {Int32Array}
+   */
+  spectral(k, seed) {
+    return Int32Array.from(this.set.get('scans').spectral(k, seed).labels);
+  }
+
   /** @param {number} eps @param {number} minPoints @returns {Int32Array} */
   dbscan(eps, minPoints) {
     return this.set.get('scans').dbscan(eps, minPoints);

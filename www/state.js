@@ -21,9 +21,9 @@ import { siteSubsample, OUTDOOR_PRESET } from './suggest.js';
 /** A category: its label, member scans (indices) and most central member.
  * @typedef {{label: number, members: number[], medoid: number}} Category */
 /** How to cluster (the form's values).
- * @typedef {{method: 'hkmeans' | 'kmeans' | 'dbscan', hkSeed: number, hkSplits: 'auto' | number, k: number,
- *   seeding: import('./engine.js').Seeding, restarts: number, kmSeed: number, eps: number,
- *   minPoints: number}} Method */
+ * @typedef {{method: 'hkmeans' | 'kmeans' | 'dbscan' | 'spectral', hkSeed: number, hkSplits: 'auto' | number, k: number,
+ *   seeding: import('./engine.js').Seeding, restarts: number, kmSeed: number, spK: number, spSeed: number,
+ *   eps: number, minPoints: number}} Method */
 
 /**
  * @typedef {object} State

@@ -184,6 +184,8 @@ export class View {
       // "k-means++, best of 10" is plusplus seeding with 10 restarts.
       restarts: Number(/** @type {HTMLSelectElement} */ (document.getElementById('seeding')).selectedOptions[0]?.dataset.restarts ?? 1),
       kmSeed: Number($('km-seed').value),
+      spK: Number($('sp-k').value),
+      spSeed: Number($('sp-seed').value),
       eps: Number($('eps').value),
       minPoints: Number($('minpts').value),
     };

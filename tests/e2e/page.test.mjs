@@ -259,6 +259,25 @@ test('k-means on the demo: "k-means++, best of 10" keeps the cheapest of ten run
   }
 });
 
+test('spectral clustering on the demo: its own k and seed, the page evaluates it', async () => {
+  await h.page.selectOption('#method', 'spectral'); // k 5
+  try {
+    assert.ok(await h.page.isVisible('#sp-k') && !(await h.page.isVisible('#km-seed')));
+    // Measured on this demo (as tests/js/engine.test.mjs measures the engine):
+    // one corridor scan with another kind at k 5, none at k 8.
+    assert.match(await h.page.textContent('#accuracy'), /accuracy 97\.5 %/);
+    await h.page.fill('#sp-k', '8');
+    await h.page.dispatchEvent('#sp-k', 'change');
+    assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);
+    await h.page.fill('#sp-k', '41');
+    await h.page.dispatchEvent('#sp-k', 'change');
+    assert.match(await h.page.textContent('#cluster-status'), /k = 41 is more than the 40 scans/);
+  } finally {
+    await h.page.fill('#sp-k', '5');
+    await h.page.selectOption('#method', 'hkmeans');
+  }
+});
+
 test('the DBSCAN sweep shades cells by S and a click clusters with that cell', async () => {
   await h.page.selectOption('#method', 'dbscan');
   await h.page.click('#sweep');

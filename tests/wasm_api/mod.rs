@@ -373,6 +373,13 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(e.contains("k must be a whole number, got 2.5"), "{e}");
     let e = message(set.kmedoids(-1.0, 0.0).err().unwrap());
     assert!(e.contains("k must be a whole number, got -1.0"), "{e}");
+    let e = message(set.spectral(2.0, 0.0, Some(0.5), None).err().unwrap());
+    assert!(
+        e.contains("restarts must be a whole number, got 0.5"),
+        "{e}"
+    );
+    let e = message(set.spectral(2.0, 0.0, None, Some(0.0)).err().unwrap());
+    assert!(e.contains("neighbours must be at least 1"), "{e}");
     let e = message(set.dbscan(0.5, 1.5).err().unwrap());
     assert!(
         e.contains("minPoints must be a whole number, got 1.5"),
