@@ -151,6 +151,7 @@ const model = set.buildModel(Int32Array.from(tree.cutK(2).labels), [[0, 'a'], [1
 same('Classification', model.classify(scans[0]));
 same('CategorySummary', model.categories()[0]);
 same('KMedoidsResult', set.kmedoids(2, 0));
+same('SpectralResult', set.spectral(2, 0));
 const simulated = new pc.Simulator('indoor', 1, 1).scan(0);
 same('SimulatedScan', simulated);
 assert.ok(simulated.bytes instanceof Uint8Array, 'a simulated scan comes as PLY bytes');

@@ -350,8 +350,10 @@ impl Collection {
     /// [`spectral::MAX_SCANS`](crate::cluster::spectral::MAX_SCANS) scans).
     pub fn spectral(&mut self, params: &SpectralParams) -> Result<SpectralResult> {
         self.check_nonempty()?;
+        // Checked before the matrix, which takes seconds at 2000 scans.
+        let params = crate::cluster::ParamGuard::check(params)?;
         crate::cluster::spectral::check_size(self.len())?;
-        Spectral::fit(self.matrix()?, params)
+        Spectral::fit(self.matrix()?, &params)
     }
 
     /// DBSCAN on the Delta matrix: labels, -1 for noise.

@@ -3,6 +3,7 @@
 // temporary); callers get plain JS data. The wasm module is a parameter, so
 // the page passes its web build and the unit tests the Node build.
 
+
 /** @typedef {typeof import('./pkg/placecat.js')} Wasm */
 /** @typedef {import('./pkg/placecat.js').DescriptorParams} DescriptorParams */
 /** @typedef {Required<DescriptorParams>} Params */
@@ -43,6 +44,9 @@ function checkRuns(restarts) {
     throw new RangeError(`restarts must be a whole number of runs from 1, got ${restarts}`);
   }
 }
+
+/** The most scans the page clusters spectrally (see `Engine.spectral`). */
+export const PAGE_SPECTRAL_LIMIT = 1000;
 
 /** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
 export class Slot {
@@ -211,12 +215,20 @@ export class Engine {
   }
 
   /**
-   * Spectral clustering (the cheapest of ten k-means runs on the embedded scans;
-   * the wasm side refuses more than 2000 scans).
-   * @param {number} k @param {number} seed @returns {Int32Array}
+   * Spectral clustering (the cheapest of ten k-means runs on the embedded scans).
+   * It runs on the page's thread and grows with the cube of the scans, so the
+   * page takes at most `limit` (in Node's wasm here: 0.35 s for 500 scans, 1.5 s
+   * for 1000; 2000 would hold the page for some 12 s). The CLI and Python take 2000.
+   * @param {number} k @param {number} seed @param {number} [limit]
+   * @returns {Int32Array}
+   * @throws {RangeError} for more scans than `limit`
    */
-  spectral(k, seed) {
-    return Int32Array.from(this.set.get('scans').spectral(k, seed).labels);
+  spectral(k, seed, limit = PAGE_SPECTRAL_LIMIT) {
+    const set = this.set.get('scans');
+    if (set.length > limit) {
+      throw new RangeError(`spectral clustering on the page takes at most ${limit} scans (it grows with the cube of their number and would hold the page), got ${set.length}; use the tree or k-means here, or the CLI or Python for up to 2000`);
+    }
+    return Int32Array.from(set.spectral(k, seed).labels);
   }
 
   /** @param {number} eps @param {number} minPoints @returns {Int32Array} */

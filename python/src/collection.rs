@@ -235,6 +235,7 @@ impl PyCollection {
         let out = PyDict::new(py);
         out.set_item("labels", labels_array(py, r.labels))?;
         out.set_item("k", k)?;
+        out.set_item("categories", k)?;
         out.set_item("seed", seed)?;
         out.set_item("neighbours", neighbours)?;
         out.set_item("restarts", restarts)?;

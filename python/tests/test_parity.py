@@ -42,6 +42,7 @@ def test_labels_equal_the_parity_fixture(described, parity_fixture):
         assert r["labels"].tolist() == parity_fixture[key], seeding
     assert c.hkmeans(seed=3).cut_k(4)["labels"].tolist() == parity_fixture["hkmeans_cut4"]
     assert c.dbscan(0.5, 2).tolist() == parity_fixture["dbscan"]
+    assert c.spectral(4, seed=3)["labels"].tolist() == parity_fixture["spectral_k4"]
 
 
 def test_kmeans_restarts_equal_the_cli(described, parity_files, tmp_path):
@@ -74,18 +75,27 @@ def test_spectral_equals_the_cli_and_a_numpy_recomputation(described, parity_fil
     )
     assert r["labels"].dtype == np.int32 and r["labels"].tolist() == cli["labels"]
     assert (cli["restarts"], cli["neighbours"], cli["categories"]) == (10, 7, 4)
+    assert (r["restarts"], r["neighbours"], r["categories"]) == (10, 7, 4)
     assert r["restart"] == cli["restart"] and r["cost"] == pytest.approx(cli["cost"], rel=1e-12)
     assert sorted(set(cli["labels"])) == [0, 1, 2, 3]
     d = c.delta_matrix().astype(np.float64)
     n = len(d)
-    scale = np.sort(d + np.diag(np.full(n, np.inf)), axis=1)[:, 6]
-    a = np.exp(-(d**2) / np.outer(scale, scale))
-    np.fill_diagonal(a, 0.0)
-    degree = a.sum(axis=1)
-    leading = np.linalg.eigvalsh(a / np.sqrt(np.outer(degree, degree)))[::-1][:4]
-    np.testing.assert_allclose(r["eigenvalues"], leading, rtol=0, atol=1e-9)
-    np.testing.assert_allclose(cli["eigenvalues"], leading, rtol=0, atol=1e-9)
-    assert leading[0] == pytest.approx(1.0, abs=1e-12)
+    assert (d + np.eye(n) > 0).all(), "no two scans alike: no copy to leave out of the scale"
+
+    def leading(neighbours, k):
+        scale = np.sort(d + np.diag(np.full(n, np.inf)), axis=1)[:, neighbours - 1]
+        a = np.exp(-(d**2) / np.outer(scale, scale))
+        np.fill_diagonal(a, 0.0)
+        degree = a.sum(axis=1)
+        return np.linalg.eigvalsh(a / np.sqrt(np.outer(degree, degree)))[::-1][:k]
+
+    np.testing.assert_allclose(r["eigenvalues"], leading(7, 4), rtol=0, atol=1e-9)
+    np.testing.assert_allclose(cli["eigenvalues"], leading(7, 4), rtol=0, atol=1e-9)
+    assert leading(7, 4)[0] == pytest.approx(1.0, abs=1e-12)
+    # Another neighbour, another scale: the eigenvalues follow it.
+    three = c.spectral(3, seed=3, neighbours=3)["eigenvalues"]
+    np.testing.assert_allclose(three, leading(3, 3), rtol=0, atol=1e-9)
+    assert np.abs(np.array(three) - leading(7, 3)).max() > 1e-3
 
 
 def test_descriptors_and_delta_matrix_equal_the_cli(described, parity_files, tmp_path):

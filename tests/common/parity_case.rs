@@ -77,5 +77,6 @@ pub fn parity_case() -> serde_json::Value {
         "kmeans_plusplus": km(Seeding::PlusPlus),
         "hkmeans_cut4": tree.cut_k(4).unwrap().labels,
         "dbscan": Dbscan::fit(&m, &DbscanParams::new(0.5, 2)).unwrap(),
+        "spectral_k4": Spectral::fit(&m, &SpectralParams::new(4).seed(3)).unwrap().labels,
     })
 }

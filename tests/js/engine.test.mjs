@@ -110,6 +110,14 @@ test('spectral clustering on the raw DescriptorSet: plain labels and eigenvalues
   });
 });
 
+test('the page clusters spectrally up to its limit and says why not above it', () => {
+  const e = new Engine(wasm);
+  e.load(params, scans.map((s) => s.descriptorJson));
+  assert.equal(e.evaluate(scans.map((s) => s.label), e.spectral(8, 0)).accuracy, 1);
+  assert.throws(() => e.spectral(8, 0, 39), /^RangeError: spectral clustering on the page takes at most 39 scans .*got 40/);
+  e.dispose();
+});
+
 test('k-means, DBSCAN and the sweep return plain labels and points', () => {
   const e = new Engine(wasm);
   e.load(params, scans.map((s) => s.descriptorJson));

@@ -10,20 +10,23 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 /// The most scans spectral clustering takes: its dense
-/// eigen-decomposition grows with the cube of the scans (0.09 s for 500
-/// and 6.8 s for 2,000 on one core natively; `cargo bench --bench stages
-/// -- spectral`).
+/// eigen-decomposition grows with the cube of the scans. The whole fit
+/// (affinity, eigen-decomposition, 10 k-means runs) took 0.09 s for 500
+/// scans and 6.8 s for 2,000 natively on one core (`cargo bench --bench
+/// stages -- spectral`); wasm is slower.
 pub const MAX_SCANS: usize = 2000;
 
 /// What spectral clustering returns.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(target_arch = "wasm32", derive(tsify::Tsify))]
 pub struct SpectralResult {
-    /// Category of each scan, numbered in order of first appearance.
+    /// Category of each scan, numbered in order of first appearance; k
+    /// categories, each of at least one scan.
     pub labels: Vec<i32>,
     /// The k leading eigenvalues of the normalised affinity, largest
-    /// first (1 for each group of scans that no affinity joins to the
-    /// rest; a gap after the k-th says k groups stand apart).
+    /// first: 1 for each group of scans joined to each other and to no
+    /// other scan (a lone scan joined to none gives 0); a gap after the
+    /// k-th says k groups stand apart.
     pub eigenvalues: Vec<f64>,
     /// The kept k-means run's sum of squared distances of the embedded
     /// scans to their centres.
@@ -37,8 +40,9 @@ pub struct Spectral;
 
 impl Spectral {
     /// Labels of the `matrix`'s scans in `params.k` categories; `params`
-    /// is checked first. An error for more than [`MAX_SCANS`] scans or a
-    /// non-finite or negative Delta.
+    /// is checked first. An error for more than [`MAX_SCANS`] scans, a
+    /// matrix that is not n x n, a non-finite or negative Delta, or an
+    /// eigen-decomposition that does not converge.
     pub fn fit(
         matrix: &DistanceMatrix,
         params: &impl ParamGuard<Checked = SpectralValidParams>,
@@ -47,19 +51,22 @@ impl Spectral {
         let n = matrix.n;
         check_k(params.k, n)?;
         check_size(n)?;
-        if let Some(at) = matrix
-            .data
-            .iter()
-            .position(|d| !(d.is_finite() && *d >= 0.0))
-        {
-            return Err(Error::Mismatch(format!(
-                "Delta matrix: ({}, {}) is {}, not a finite distance",
+        if matrix.data.len() != n * n {
+            return invalid(format!(
+                "Delta matrix: {} values for {n} scans, not {n} x {n}",
+                matrix.data.len()
+            ));
+        }
+        let bad = |d: &f32| !(d.is_finite() && *d >= 0.0);
+        if let Some(at) = matrix.data.iter().position(bad) {
+            return invalid(format!(
+                "Delta matrix: ({}, {}) is {}, not a finite Delta",
                 at / n,
                 at % n,
                 matrix.data[at]
-            )));
+            ));
         }
-        let embedded = embed(matrix, params.k, params.neighbours);
+        let embedded = embed(matrix, params.k, params.neighbours)?;
         let mut kept: Option<(f64, Vec<usize>, usize)> = None;
         for run in 0..params.restarts {
             let mut r = rng_stream(params.seed, run as u64);
@@ -94,20 +101,26 @@ struct Embedded {
     eigenvalues: Vec<f64>,
 }
 
-fn embed(matrix: &DistanceMatrix, k: usize, neighbours: usize) -> Embedded {
+fn embed(matrix: &DistanceMatrix, k: usize, neighbours: usize) -> Result<Embedded> {
     let n = matrix.n;
     let d = |i: usize, j: usize| f64::from(matrix.get(i, j));
     // A scan's scale is its distance to its `neighbours`-th nearest other
-    // scan (the farthest when there are fewer). A scan with that many
-    // copies has a scale of 0: its affinity is 1 to its copies and 0 to
-    // the rest (below, with no 0/0).
+    // scan (the farthest when there are fewer), its copies (Delta 0) not
+    // counted: else a scan with that many copies would have a scale of 0
+    // and be joined to nothing but them, while one copy fewer would change
+    // nothing. A scan whose others are all copies keeps 0, its affinity 1
+    // to them (below, with no 0/0).
     let scales: Vec<f64> = (0..n)
         .map(|i| {
-            let mut row: Vec<f64> = (0..n).filter(|&j| j != i).map(|j| d(i, j)).collect();
-            let at = neighbours.min(row.len()).saturating_sub(1);
+            let mut row: Vec<f64> = (0..n)
+                .filter(|&j| j != i)
+                .map(|j| d(i, j))
+                .filter(|&x| x > 0.0)
+                .collect();
             if row.is_empty() {
-                return 1.0;
+                return 0.0;
             }
+            let at = neighbours.min(row.len()) - 1;
             *row.select_nth_unstable_by(at, f64::total_cmp).1
         })
         .collect();
@@ -140,7 +153,14 @@ fn embed(matrix: &DistanceMatrix, k: usize, neighbours: usize) -> Embedded {
             a[(i, j)] *= inv_sqrt[i] * inv_sqrt[j];
         }
     }
-    let eigen = SymmetricEigen::new(a);
+    // A cap on the solver's sweeps, far above what it needs: nalgebra's
+    // `new` has none and can loop on some matrices of zeros and ones.
+    let sweeps = 30 * n.max(1);
+    let eigen = SymmetricEigen::try_new(a, f64::EPSILON, sweeps).ok_or_else(|| {
+        Error::Limit(format!(
+            "spectral clustering: the eigen-decomposition of {n} scans did not converge in {sweeps} sweeps"
+        ))
+    })?;
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&x, &y| {
         eigen.eigenvalues[y]
@@ -162,10 +182,10 @@ fn embed(matrix: &DistanceMatrix, k: usize, neighbours: usize) -> Embedded {
             }
         })
         .collect();
-    Embedded {
+    Ok(Embedded {
         points,
         eigenvalues: leading.iter().map(|&c| eigen.eigenvalues[c]).collect(),
-    }
+    })
 }
 
 fn squared(a: &[f64], b: &[f64]) -> f64 {
@@ -207,32 +227,53 @@ fn kmeans(
         };
         centres.push(points[pick].clone());
     }
-    let mut labels: Vec<usize> = points.iter().map(|p| nearest(p, &centres).0).collect();
+    let mut labels: Vec<usize> = vec![usize::MAX; n];
     for _ in 0..max_iterations {
+        let mut next: Vec<usize> = points.iter().map(|p| nearest(p, &centres).0).collect();
+        refill_empty(points, &centres, &mut next, k);
+        let settled = next == labels;
+        labels = next;
         for (c, centre) in centres.iter_mut().enumerate() {
             let members: Vec<&Vec<f64>> = (points.iter().zip(&labels))
                 .filter(|(_, &l)| l == c)
                 .map(|(p, _)| p)
                 .collect();
-            // An emptied centre stays where it was.
-            if !members.is_empty() {
-                for (d, v) in centre.iter_mut().enumerate() {
-                    *v = members.iter().map(|p| p[d]).sum::<f64>() / members.len() as f64;
-                }
+            for (d, v) in centre.iter_mut().enumerate() {
+                *v = members.iter().map(|p| p[d]).sum::<f64>() / members.len() as f64;
             }
         }
-        let next: Vec<usize> = points.iter().map(|p| nearest(p, &centres).0).collect();
-        if next == labels {
+        if settled {
             break;
         }
-        labels = next;
     }
-    let cost = points
-        .iter()
-        .zip(&labels)
+    let cost = (points.iter().zip(&labels))
         .map(|(p, &l)| squared(p, &centres[l]))
         .sum();
     (cost, labels)
+}
+
+/// Give each category left empty the point farthest from its own centre
+/// among those of categories of more than one point, so that k categories
+/// stay k, as the crate's k-means does (n >= k, so there is always one).
+fn refill_empty(points: &[Vec<f64>], centres: &[Vec<f64>], labels: &mut [usize], k: usize) {
+    let mut counts = vec![0usize; k];
+    for &l in labels.iter() {
+        counts[l] += 1;
+    }
+    for c in 0..k {
+        if counts[c] > 0 {
+            continue;
+        }
+        let off = |i: usize| squared(&points[i], &centres[labels[i]]);
+        let farthest = (0..points.len())
+            .filter(|&i| counts[labels[i]] > 1)
+            .max_by(|&a, &b| off(a).total_cmp(&off(b)).then(b.cmp(&a)));
+        if let Some(i) = farthest {
+            counts[labels[i]] -= 1;
+            labels[i] = c;
+            counts[c] = 1;
+        }
+    }
 }
 
 /// Labels renumbered so that category 0 is the first scan's, 1 the next
@@ -319,10 +360,62 @@ mod tests {
         assert!(a.cost.is_finite() && a.eigenvalues.iter().all(|e| e.is_finite()));
         assert!(a.labels[40..].iter().all(|&l| l == a.labels[40]));
         assert!(a.labels[..40].iter().all(|&l| l != a.labels[40]));
-        // All scans the same: one group, whatever k.
+        // All scans the same: every affinity 1, so the normalised affinity
+        // is (J - I) / (n - 1), of eigenvalues 1 and -1 / (n - 1); any split
+        // is as good, and k categories stay k.
         let same = DistanceMatrix::from_fn(5, |_, _| 0.0);
         let r = Spectral::fit(&same, &SpectralParams::new(2)).unwrap();
-        assert_eq!(r.labels.len(), 5);
+        assert!(
+            (r.eigenvalues[0] - 1.0).abs() < 1e-12,
+            "{:?}",
+            r.eigenvalues
+        );
+        assert!(
+            (r.eigenvalues[1] + 0.25).abs() < 1e-12,
+            "{:?}",
+            r.eigenvalues
+        );
+        let mut seen = r.labels.clone();
+        seen.sort();
+        seen.dedup();
+        assert_eq!(seen, vec![0, 1], "{:?}", r.labels);
+    }
+
+    #[test]
+    fn copies_take_the_scale_of_their_nearest_other_scans() {
+        // Ten copies at the centre of a ring of 20: counted as neighbours,
+        // the copies would have a scale of 0, be joined to nothing but each
+        // other and make a second group (a second eigenvalue of 1).
+        let mut points = ring(20, 1.0);
+        points.extend(vec![[0.0, 0.0]; 10]);
+        let r = Spectral::fit(&matrix_of(&points), &SpectralParams::new(2)).unwrap();
+        assert!((r.eigenvalues[0] - 1.0).abs() < 1e-9, "{:?}", r.eigenvalues);
+        assert!(r.eigenvalues[1] < 0.99, "{:?}", r.eigenvalues);
+    }
+
+    #[test]
+    fn a_scan_joined_to_nothing_is_still_placed_and_k_stays_k() {
+        // Twelve scans round a ring and one a million away: its affinity to
+        // every other underflows to 0, so its point in the embedding is 0.
+        let mut points = ring(12, 1.0);
+        points.push([1e6, 0.0]);
+        for k in [2, 3] {
+            let r = Spectral::fit(&matrix_of(&points), &SpectralParams::new(k)).unwrap();
+            assert_eq!(r.labels.len(), 13);
+            assert!(r.cost.is_finite() && r.eigenvalues.iter().all(|e| e.is_finite()));
+            let top = *r.labels.iter().max().unwrap();
+            assert_eq!(top, k as i32 - 1, "{:?}", r.labels);
+        }
+        // Two scans in two categories; k = n.
+        let two = matrix_of(&[[0.0, 0.0], [1.0, 0.0]]);
+        let r = Spectral::fit(&two, &SpectralParams::new(2)).unwrap();
+        assert_eq!(r.labels, vec![0, 1]);
+        let five = matrix_of(&ring(5, 1.0));
+        let mut all = Spectral::fit(&five, &SpectralParams::new(5))
+            .unwrap()
+            .labels;
+        all.sort();
+        assert_eq!(all, vec![0, 1, 2, 3, 4]);
     }
 
     #[test]
@@ -339,7 +432,13 @@ mod tests {
         let e = Spectral::fit(&nan, &SpectralParams::new(2))
             .unwrap_err()
             .to_string();
-        assert!(e.contains("(2, 3) is NaN"), "{e}");
+        assert!(e.contains("(2, 3) is NaN, not a finite Delta"), "{e}");
+        let mut short = m.clone();
+        short.data.pop();
+        let e = Spectral::fit(&short, &SpectralParams::new(2))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("24 values for 5 scans"), "{e}");
         let big = DistanceMatrix {
             n: MAX_SCANS + 1,
             data: Vec::new(),

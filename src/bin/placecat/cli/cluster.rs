@@ -36,8 +36,8 @@ pub struct ClusterArgs {
     /// clustered so. hkmeans: 2-means++ trials at every split of the tree,
     /// the cheapest kept (1: the paper's tree; at most 1000); with
     /// --categories auto the rule's reference trees are built so too.
-    /// spectral: runs of k-means on the embedded scans (10 unless given).
-    /// [default: 1]
+    /// spectral: runs of k-means on the embedded scans. Default: 1 for
+    /// kmeans and hkmeans, 10 for spectral.
     #[arg(long)]
     pub restarts: Option<usize>,
     /// Seeds k-means, k-medoids, spectral clustering's k-means, the tree's
