@@ -5,6 +5,8 @@
 //!     cargo run --release --example spectral_round -- --dev   # seeds 1-6: docs/spectral-dev.json
 //!     cargo run --release --example spectral_round            # test seeds, once: docs/spectral.{json,md}
 //!     ... -- --render   # docs/spectral.md again from the two .json
+//!     ... -- --second   # nineteenth round, test seeds 491-495, once: docs/spectral-2.{json,md}
+//!     ... -- --second --render
 //!
 //! The method, the presets and the rule were fixed in docs/seeds.md
 //! ("issue 18, eighteenth round") before any run: spectral clustering
@@ -12,6 +14,8 @@
 //! kinds if on the test seeds, with `indoor_objects`, its mean over the 14
 //! room rows is above k-means++ best of 10's and it is lower than best of
 //! 10 in at most 4 of them. The test run refuses to overwrite its report.
+//! The nineteenth round ("issue 18, nineteenth round" in docs/seeds.md)
+//! runs the same on fresh seeds and reads that rule on both samples pooled.
 
 use placecat::cluster::{KMeans, KMeansParams, Seeding, Spectral, SpectralParams};
 use placecat::distance::Space;
@@ -33,6 +37,8 @@ use rounds::*;
 /// Fixed in docs/seeds.md ("issue 18, eighteenth round") before any run.
 const DEV_SEEDS: &[u64] = &[1, 2, 3, 4, 5, 6];
 const TEST_SEEDS: &[u64] = &[481, 482, 483, 484, 485];
+/// The nineteenth round's, fixed in docs/seeds.md before any run.
+const SECOND_SEEDS: &[u64] = &[491, 492, 493, 494, 495];
 const ROOM_PRESETS: &[&str] = &["indoor", "indoor_searched", "indoor_objects"];
 const WAREHOUSE_PRESETS: &[&str] = &["indoor", "indoor_plus"];
 const OUTDOOR_PRESETS: &[&str] = &["outdoor", "outdoor_near"];
@@ -191,6 +197,26 @@ impl Rule {
     }
 }
 
+/// Two reports' rows as one: each row's seeds of both, in order.
+fn pooled(a: &Report, b: &Report) -> Res<Report> {
+    let mut rows = a.rows.clone();
+    for (x, y) in rows.iter_mut().zip(&b.rows) {
+        if (&x.family, &x.sensor, &x.preset) != (&y.family, &y.sensor, &y.preset) {
+            return Err(format!("rows differ: {} {} {}", y.family, y.sensor, y.preset).into());
+        }
+        x.stride.extend(&y.stride);
+        x.best_of_10.extend(&y.best_of_10);
+        x.spectral.extend(&y.spectral);
+        x.spectral_lowest.extend(&y.spectral_lowest);
+        x.nearest.extend(&y.nearest);
+    }
+    Ok(Report {
+        seeds: a.seeds.iter().chain(&b.seeds).copied().collect(),
+        seconds: a.seconds + b.seconds,
+        rows,
+    })
+}
+
 /// Room rows (of `preset`) where a method's mean reaches the target.
 fn rows_at_target(r: &Report, preset: &str, met: impl Fn(&Row) -> bool) -> usize {
     (r.rows.iter())
@@ -237,13 +263,7 @@ fn render(dev: &Report, test: &Report) -> Res<String> {
             "it stays an option the docs do not recommend"
         }
     )?;
-    for preset in ROOM_PRESETS {
-        let k = rows_at_target(test, preset, |x| {
-            mean(&x.stride) >= TARGET / 100.0 && mean(&x.best_of_10) >= TARGET / 100.0
-        });
-        let s = rows_at_target(test, preset, |x| mean(&x.spectral) >= TARGET / 100.0);
-        writeln!(o, "- `{preset}`: at least 85 % with both k-means in {k} room rows; with spectral clustering in {s}.")?;
-    }
+    at_target_lines(&mut o, test)?;
     writeln!(o, "\nRegenerate with `cargo run --release --example spectral_round -- --dev` (`spectral-dev.json`, {:.0} s) then `cargo run --release --example spectral_round` (test seeds, this file and `spectral.json`, {:.0} s; it refuses to run again once `spectral.json` exists; `-- --render` renders this file from them). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, 45 scans a room set (5 kinds, rooms of 3 scans), 100 a route; k the true number of kinds. Stride k-means runs once; k-means++ best of 10 and spectral clustering with clustering seeds 0-9 (mean; lowest: any single clustering on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", dev.seconds, test.seconds)?;
     writeln!(o, "## What it shows\n\n{NOTES}\n")?;
     writeln!(
@@ -270,8 +290,98 @@ fn render(dev: &Report, test: &Report) -> Res<String> {
     Ok(o)
 }
 
+/// What the second sample showed, written after its one test run.
+const NOTES_2: &str = "(Written after the test run.)";
+
+/// One line per preset: the room rows at 85 % with both k-means and with
+/// spectral clustering.
+fn at_target_lines(o: &mut String, r: &Report) -> Res<()> {
+    for preset in ROOM_PRESETS {
+        let k = rows_at_target(r, preset, |x| {
+            mean(&x.stride) >= TARGET / 100.0 && mean(&x.best_of_10) >= TARGET / 100.0
+        });
+        let s = rows_at_target(r, preset, |x| mean(&x.spectral) >= TARGET / 100.0);
+        writeln!(o, "- `{preset}`: at least 85 % with both k-means in {k} room rows; with spectral clustering in {s}.")?;
+    }
+    Ok(())
+}
+
+fn render_second(first: &Report, second: &Report) -> Res<String> {
+    let mut o = String::new();
+    writeln!(
+        o,
+        "# Spectral clustering on a second fresh sample (issue 18, nineteenth round)\n"
+    )?;
+    writeln!(o, "**No change.** The eighteenth round's families, sensors, presets and methods (docs/spectral.md), on fresh test seeds {}-{}. The rule, fixed in docs/seeds.md before any run: pooled over 481-485 and these seeds (ten seeds a row), the docs keep recommending spectral clustering for sets of room scans if, with `{PRESET}`, its mean over the 14 room rows is above k-means++ best of 10's and it is lower than best of 10 in at most {MOST_ROWS_LOWER} of them; otherwise the recommendation is withdrawn.\n", SECOND_SEEDS[0], SECOND_SEEDS[SECOND_SEEDS.len() - 1])?;
+    let both = pooled(first, second)?;
+    let rule = Rule::of(&both);
+    writeln!(
+        o,
+        "**The rule, computed** (pooled, ten seeds a row, `{PRESET}`, {} room rows): spectral clustering averages {:.1} % against k-means++ best of 10's {:.1} %, and is lower in {} rows: {}.\n",
+        rule.rows,
+        100.0 * rule.spectral,
+        100.0 * rule.best_of_10,
+        rule.lower,
+        if rule.recommends() {
+            "the recommendation stays"
+        } else {
+            "the recommendation is withdrawn"
+        }
+    )?;
+    let alone = Rule::of(second);
+    writeln!(
+        o,
+        "On {}-{} alone: spectral {:.1} % against best of 10's {:.1} %, lower in {} rows.\n",
+        SECOND_SEEDS[0],
+        SECOND_SEEDS[SECOND_SEEDS.len() - 1],
+        100.0 * alone.spectral,
+        100.0 * alone.best_of_10,
+        alone.lower
+    )?;
+    writeln!(o, "On these seeds:\n")?;
+    at_target_lines(&mut o, second)?;
+    writeln!(o, "\nPooled (ten seeds a row):\n")?;
+    at_target_lines(&mut o, &both)?;
+    writeln!(o, "\nRegenerate with `cargo run --release --example spectral_round -- --second` (test seeds, this file and `spectral-2.json`, {:.0} s; it refuses to run again once `spectral-2.json` exists; `-- --second --render` renders this file from it and docs/spectral.json). The development figures are the eighteenth round's (docs/spectral.md). Methods and columns as there.\n", second.seconds)?;
+    writeln!(o, "## What it shows\n\n{NOTES_2}\n")?;
+    writeln!(
+        o,
+        "## 1. Test seeds {}-{}\n",
+        SECOND_SEEDS[0],
+        SECOND_SEEDS[SECOND_SEEDS.len() - 1]
+    )?;
+    table(&mut o, second)?;
+    writeln!(
+        o,
+        "\n## 2. Pooled over 481-485 and {}-{} (ten seeds a row)\n",
+        SECOND_SEEDS[0],
+        SECOND_SEEDS[SECOND_SEEDS.len() - 1]
+    )?;
+    table(&mut o, &both)?;
+    Ok(o)
+}
+
+/// The nineteenth round: the second sample, once, then its report.
+fn second_sample(args: &[String]) -> Res<()> {
+    let (first_json, second_json) = (docs().join("spectral.json"), docs().join("spectral-2.json"));
+    if !args.iter().any(|a| a == "--render") {
+        seeds::check_round_seeds(DEV_SEEDS, SECOND_SEEDS)?;
+        if second_json.exists() {
+            return Err("docs/spectral-2.json exists: the test seeds were run once already (use --second --render)".into());
+        }
+        let r = run(SECOND_SEEDS)?;
+        write("spectral-2.json", &serde_json::to_string_pretty(&r)?)?;
+    }
+    let first: Report = read_json(&first_json)?;
+    let second: Report = read_json(&second_json)?;
+    write("spectral-2.md", &render_second(&first, &second)?)
+}
+
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--second") {
+        return second_sample(&args);
+    }
     let (dev_json, test_json) = (
         docs().join("spectral-dev.json"),
         docs().join("spectral.json"),
