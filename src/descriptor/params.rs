@@ -222,11 +222,11 @@ pub const PRESET_NOTES: [(&str, &str); 14] = [
     ),
     (
         "indoor_searched",
-        "indoor_columns' parts plus iron, weighted by a search on simulated rooms: room kinds on most sensors; on office floors indoor_columns did better (docs/indoor-searched.md)",
+        "indoor_columns' parts plus iron, weighted by a search on simulated rooms: room kinds on most sensors; on office floors indoor_columns did better (docs/indoor-searched.md); its kinds group best by spectral clustering (docs/spectral.md)",
     ),
     (
         "indoor_objects",
-        "indoor_searched plus the objects part (what stands in the room, object by object: footprints, tops, roundness, number): room kinds; above indoor_searched on office floors and on schools and wards seen with their own sensor, below it on schools seen with 16 to 64 beams (docs/room-objects.md)",
+        "indoor_searched plus the objects part (what stands in the room, object by object: footprints, tops, roundness, number): room kinds; above indoor_searched on office floors and on schools and wards seen with their own sensor, below it on schools seen with 16 to 64 beams (docs/room-objects.md); its kinds group best by spectral clustering (docs/spectral.md)",
     ),
 ];
 
