@@ -67,13 +67,7 @@ fn main() -> Res<()> {
             t0.elapsed().as_secs_f64()
         );
         let cells: Vec<String> = nn.iter().map(|&x| pct(x)).collect();
-        writeln!(
-            table,
-            "| {}, {} | {} |",
-            f.name,
-            sensor.name(),
-            cells.join(" | ")
-        )?;
+        table_row(&mut table, &f, sensor, &cells)?;
         for (m, x) in means.iter_mut().zip(&nn) {
             *m += x;
         }

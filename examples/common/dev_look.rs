@@ -45,3 +45,10 @@ fn kmeans_figures(space: &placecat::distance::Space, truth: &[String], k: usize)
     })?;
     Ok((once(truth, &stride.labels)?.accuracy, best.accuracy))
 }
+
+/// A report's table row: the family and sensor, then `cells`.
+#[allow(dead_code)] // objects_dev and spectral_k_dev
+fn table_row(table: &mut String, f: &Family, sensor: Sensor, cells: &[String]) -> std::fmt::Result {
+    use std::fmt::Write as _;
+    writeln!(table, "| {}, {} | {} |", f.name, sensor.name(), cells.join(" | "))
+}
