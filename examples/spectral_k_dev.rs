@@ -60,10 +60,11 @@ fn main() -> Res<()> {
                 let rule = Clusterer::KMeans(&KMeansParams::new(1).restarts(10));
                 let choice = c.choose_categories(rule, &ChooseKParams::default())?;
                 let (gap_k, rule_k): &mut (Vec<usize>, Vec<usize>) = &mut ks[p];
-                gap_k.push(eigengap(&values));
-                rule_k.push(choice.k);
-                totals[p][0] += usize::from(eigengap(&values) == set.kinds);
+                let k = eigengap(&values);
+                totals[p][0] += usize::from(k == set.kinds);
                 totals[p][1] += usize::from(choice.k == set.kinds);
+                gap_k.push(k);
+                rule_k.push(choice.k);
             }
         }
         let list = |v: &[usize]| {

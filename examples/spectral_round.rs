@@ -158,6 +158,11 @@ fn run(seeds: &[u64]) -> Res<Report> {
     })
 }
 
+/// A run of seeds as the reports name it: "481-485".
+fn span(seeds: &[u64]) -> String {
+    format!("{}-{}", seeds[0], seeds[seeds.len() - 1])
+}
+
 fn docs() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
 }
@@ -266,12 +271,7 @@ fn render(dev: &Report, test: &Report) -> Res<String> {
     at_target_lines(&mut o, test)?;
     writeln!(o, "\nRegenerate with `cargo run --release --example spectral_round -- --dev` (`spectral-dev.json`, {:.0} s) then `cargo run --release --example spectral_round` (test seeds, this file and `spectral.json`, {:.0} s; it refuses to run again once `spectral.json` exists; `-- --render` renders this file from them). Families: issue 18's (examples/common/families.rs, every sensor) and the hospital floors, 45 scans a room set (5 kinds, rooms of 3 scans), 100 a route; k the true number of kinds. Stride k-means runs once; k-means++ best of 10 and spectral clustering with clustering seeds 0-9 (mean; lowest: any single clustering on any set). Room-level 1-NN: no neighbour from the scan's own room (routes: none within 25 of 300 scans).\n", dev.seconds, test.seconds)?;
     writeln!(o, "## What it shows\n\n{NOTES}\n")?;
-    writeln!(
-        o,
-        "## 1. Test seeds {}-{}\n",
-        TEST_SEEDS[0],
-        TEST_SEEDS[TEST_SEEDS.len() - 1]
-    )?;
+    writeln!(o, "## 1. Test seeds {}\n", span(TEST_SEEDS))?;
     table(&mut o, test)?;
     writeln!(
         o,
@@ -319,7 +319,7 @@ fn render_second(first: &Report, second: &Report) -> Res<String> {
         o,
         "# Spectral clustering on a second fresh sample (issue 18, nineteenth round)\n"
     )?;
-    writeln!(o, "**No change.** The eighteenth round's families, sensors, presets and methods (docs/spectral.md), on fresh test seeds {}-{}. The rule, fixed in docs/seeds.md before any run: pooled over 481-485 and these seeds (ten seeds a row), the docs keep recommending spectral clustering for sets of room scans if, with `{PRESET}`, its mean over the 14 room rows is above k-means++ best of 10's and it is lower than best of 10 in at most {MOST_ROWS_LOWER} of them; otherwise the recommendation is withdrawn.\n", SECOND_SEEDS[0], SECOND_SEEDS[SECOND_SEEDS.len() - 1])?;
+    writeln!(o, "**No change.** The eighteenth round's families, sensors, presets and methods (docs/spectral.md), on fresh test seeds {}. The rule, fixed in docs/seeds.md before any run: pooled over 481-485 and these seeds (ten seeds a row), the docs keep recommending spectral clustering for sets of room scans if, with `{PRESET}`, its mean over the 14 room rows is above k-means++ best of 10's and it is lower than best of 10 in at most {MOST_ROWS_LOWER} of them; otherwise the recommendation is withdrawn.\n", span(SECOND_SEEDS))?;
     let both = pooled(first, second)?;
     let rule = Rule::of(&both);
     writeln!(
@@ -338,9 +338,8 @@ fn render_second(first: &Report, second: &Report) -> Res<String> {
     let alone = Rule::of(second);
     writeln!(
         o,
-        "On {}-{} alone: spectral {:.1} % against best of 10's {:.1} %, lower in {} rows.\n",
-        SECOND_SEEDS[0],
-        SECOND_SEEDS[SECOND_SEEDS.len() - 1],
+        "On {} alone: spectral {:.1} % against best of 10's {:.1} %, lower in {} rows.\n",
+        span(SECOND_SEEDS),
         100.0 * alone.spectral,
         100.0 * alone.best_of_10,
         alone.lower
@@ -351,33 +350,35 @@ fn render_second(first: &Report, second: &Report) -> Res<String> {
     at_target_lines(&mut o, &both)?;
     writeln!(o, "\nRegenerate with `cargo run --release --example spectral_round -- --second` (test seeds, this file and `spectral-2.json`, {:.0} s; it refuses to run again once `spectral-2.json` exists; `-- --second --render` renders this file from it and docs/spectral.json). The development figures are the eighteenth round's (docs/spectral.md). Methods and columns as there.\n", second.seconds)?;
     writeln!(o, "## What it shows\n\n{NOTES_2}\n")?;
-    writeln!(
-        o,
-        "## 1. Test seeds {}-{}\n",
-        SECOND_SEEDS[0],
-        SECOND_SEEDS[SECOND_SEEDS.len() - 1]
-    )?;
+    writeln!(o, "## 1. Test seeds {}\n", span(SECOND_SEEDS))?;
     table(&mut o, second)?;
     writeln!(
         o,
-        "\n## 2. Pooled over 481-485 and {}-{} (ten seeds a row)\n",
-        SECOND_SEEDS[0],
-        SECOND_SEEDS[SECOND_SEEDS.len() - 1]
+        "\n## 2. Pooled over 481-485 and {} (ten seeds a row)\n",
+        span(SECOND_SEEDS)
     )?;
     table(&mut o, &both)?;
     Ok(o)
+}
+
+/// A round's test seeds, checked against docs/seeds.md and run once: an
+/// error if docs/`json` exists (`render` says how to render it instead).
+fn run_test_once(test: &[u64], json: &str, render: &str) -> Res<()> {
+    seeds::check_round_seeds(DEV_SEEDS, test)?;
+    if docs().join(json).exists() {
+        return Err(format!(
+            "docs/{json} exists: the test seeds were run once already (use {render})"
+        )
+        .into());
+    }
+    write(json, &serde_json::to_string_pretty(&run(test)?)?)
 }
 
 /// The nineteenth round: the second sample, once, then its report.
 fn second_sample(args: &[String]) -> Res<()> {
     let (first_json, second_json) = (docs().join("spectral.json"), docs().join("spectral-2.json"));
     if !args.iter().any(|a| a == "--render") {
-        seeds::check_round_seeds(DEV_SEEDS, SECOND_SEEDS)?;
-        if second_json.exists() {
-            return Err("docs/spectral-2.json exists: the test seeds were run once already (use --second --render)".into());
-        }
-        let r = run(SECOND_SEEDS)?;
-        write("spectral-2.json", &serde_json::to_string_pretty(&r)?)?;
+        run_test_once(SECOND_SEEDS, "spectral-2.json", "--second --render")?;
     }
     let first: Report = read_json(&first_json)?;
     let second: Report = read_json(&second_json)?;
@@ -399,18 +400,10 @@ fn main() -> Res<()> {
         return write("spectral-dev.json", &serde_json::to_string_pretty(&r)?);
     }
     if !args.iter().any(|a| a == "--render") {
-        seeds::check_round_seeds(DEV_SEEDS, TEST_SEEDS)?;
-        if test_json.exists() {
-            return Err(
-                "docs/spectral.json exists: the test seeds were run once already (use --render)"
-                    .into(),
-            );
-        }
         if !dev_json.exists() {
             return Err("run the development seeds first (--dev)".into());
         }
-        let r = run(TEST_SEEDS)?;
-        write("spectral.json", &serde_json::to_string_pretty(&r)?)?;
+        run_test_once(TEST_SEEDS, "spectral.json", "--render")?;
     }
     let dev: Report = read_json(&dev_json)?;
     let test: Report = read_json(&test_json)?;
