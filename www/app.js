@@ -44,8 +44,14 @@ let references = null;
  * @type {{how: {k: number} | {threshold: number}, by: State['cutBy']} | null}
  */
 let askedCut = null;
-/** Whether the pool works for the page's run (describing, its Delta matrix or its reference sets). */
-const poolBusy = () => state.running || tailOf !== null;
+/**
+ * The spectral clustering a worker runs for the page, until it settles: a new
+ * run or Cancel cancels it, a newer clustering supersedes it.
+ * @type {Promise<Int32Array> | null}
+ */
+let spectralTask = null;
+/** Whether the pool works for the page (describing, the run's Delta matrix or reference sets, a spectral clustering). */
+const poolBusy = () => state.running || tailOf !== null || spectralTask !== null;
 /** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
 let unsaved = null;
 const engine = new Engine(wasm);
@@ -305,9 +311,26 @@ function workersDispersions(seed, restarts) {
   return r && r.set === state.set && r.seed === seed && r.restarts === restarts ? r.dispersions : null;
 }
 
-/** Cluster the set by the method shown; the first cut of a tree waits for the workers' reference sets, if they compute them. */
+/** Clusterings asked for so far: a spectral one that comes back after a newer one was asked for is dropped. */
+let clusterings = 0;
+
+/**
+ * Cluster the set by the method shown; the first cut of a tree waits for the
+ * workers' reference sets, if they compute them, and a spectral clustering for
+ * its worker. Once the latest has settled, `body[data-clustered]` says how many
+ * were asked for (for scripts that drive the page, and the e2e tests).
+ */
 async function cluster() {
-  const m = view.method();
+  const mine = ++clusterings;
+  try {
+    await clusterBy(view.method());
+  } finally {
+    if (mine === clusterings) document.body.dataset.clustered = String(mine);
+  }
+}
+
+/** @param {ReturnType<View['method']>} m */
+async function clusterBy(m) {
   if (state.scans.length === 0) {
     view.status('No described scans yet.');
     return render();
@@ -333,13 +356,50 @@ async function cluster() {
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed, m.restarts)
-      : m.method === 'spectral' ? engine.spectral(m.spK, m.spSeed)
+      : m.method === 'spectral' ? await spectralInWorker(m.spK, m.spSeed)
         : engine.dbscan(m.eps, m.minPoints);
+    if (!labels) return; // a spectral clustering superseded or cancelled
     state = S.withLabels(state, labels, engine.medoids(labels));
   } catch (e) {
     return view.status(e.message);
   }
   render();
+}
+
+/**
+ * Spectral clustering of the page's set in a worker: it grows with the cube of
+ * the scans (in Node's wasm 1.5 s for 1000), so on the page's thread it would
+ * hold the page. The worker gets the set's Delta matrix, computed once already.
+ * Resolves to null when a newer clustering, a new run or Cancel came meanwhile.
+ * @param {number} k @param {number} seed @returns {Promise<Int32Array | null>}
+ */
+async function spectralInWorker(k, seed) {
+  const mine = clusterings;
+  const set = state.set;
+  const superseded = () => mine !== clusterings || state.set !== set;
+  const n = state.scans.length;
+  const start = performance.now();
+  const task = pool.run({
+    type: 'spectral', params: /** @type {S.State['params'] & {}} */ (state.params), descriptorJsons: state.scans.map((r) => r.descriptorJson),
+    matrix: engine.deltaMatrix(), k, seed,
+  });
+  spectralTask = task;
+  view.status(`Spectral clustering of ${n} ${n === 1 ? 'scan' : 'scans'} into ${k} in a worker...`);
+  try {
+    const labels = await task;
+    if (superseded()) return null;
+    stageSince('spectral', start);
+    return labels;
+  } catch (e) {
+    if (superseded()) return null;
+    if (/** @type {Error} */ (e).message === 'cancelled') {
+      view.status(`Spectral clustering cancelled; choose k or the method again to run it.`);
+      return null;
+    }
+    throw e;
+  } finally {
+    if (spectralTask === task) spectralTask = null;
+  }
 }
 
 /** Cut the tree into k categories (where two splits share a height no

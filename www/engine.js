@@ -45,9 +45,6 @@ function checkRuns(restarts) {
   }
 }
 
-/** The most scans the page clusters spectrally (see `Engine.spectral`). */
-export const PAGE_SPECTRAL_LIMIT = 1000;
-
 /** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
 export class Slot {
   /** @type {T | null} */
@@ -215,20 +212,13 @@ export class Engine {
   }
 
   /**
-   * Spectral clustering (the cheapest of ten k-means runs on the embedded scans).
-   * It runs on the page's thread and grows with the cube of the scans, so the
-   * page takes at most `limit` (in Node's wasm here: 0.35 s for 500 scans, 1.5 s
-   * for 1000; 2000 would hold the page for some 12 s). The CLI and Python take 2000.
-   * @param {number} k @param {number} seed @param {number} [limit]
-   * @returns {Int32Array}
-   * @throws {RangeError} for more scans than `limit`
+   * The set's Delta matrix, n x n row-major (computed here if no worker gave it):
+   * what `Describer.spectral` takes in a worker (app.js; spectral clustering
+   * grows with the cube of the scans, so it never runs on the page's thread).
+   * @returns {Float32Array}
    */
-  spectral(k, seed, limit = PAGE_SPECTRAL_LIMIT) {
-    const set = this.set.get('scans');
-    if (set.length > limit) {
-      throw new RangeError(`spectral clustering on the page takes at most ${limit} scans (it grows with the cube of their number and would hold the page), got ${set.length}; use the tree or k-means here, or the CLI or Python for up to 2000`);
-    }
-    return Int32Array.from(set.spectral(k, seed).labels);
+  deltaMatrix() {
+    return this.set.get('scans').deltaMatrix();
   }
 
   /** @param {number} eps @param {number} minPoints @returns {Int32Array} */
@@ -382,6 +372,21 @@ export class Describer {
   referenceDispersions(key, params, descriptorJsons, seed, which, restarts = 1) {
     checkRuns(restarts);
     return this.#keepTail(this.tailSet(key, params, descriptorJsons).referenceDispersions(seed, Uint32Array.from(which), restarts));
+  }
+
+  /**
+   * Spectral clustering in a worker, so that the page stays live however long
+   * it takes (it grows with the cube of the scans; the core takes at most 2000):
+   * a set of these descriptors with this Delta matrix (the page's, so that it is
+   * not computed twice), clustered into `k`. The core's errors are thrown as they are.
+   * @param {Params} params @param {string[]} descriptorJsons @param {Float32Array} matrix n x n, row-major
+   * @param {number} k @param {number} seed @returns {Int32Array}
+   */
+  spectral(params, descriptorJsons, matrix, k, seed) {
+    return scoped(descriptorSet(this.wasm, params, descriptorJsons), (set) => {
+      set.setDeltaMatrix(matrix);
+      return Int32Array.from(set.spectral(k, seed).labels);
+    });
   }
 
   /**

@@ -2,10 +2,10 @@
 // read and moved here by the page, pool.js; memory holds the bytes of the
 // tasks the worker holds: up to eight, within 32 MB, with the page's pool),
 // simulates one demo scan, computes rows of the Delta matrix or reference
-// sets of the choice of categories (matrix.js), or classifies one scan
-// with a model; the engine does the wasm work. A ROS bag is read in
-// slices and its clouds posted one at a time as partial replies, and so is
-// an E57 survey's stations (bagreader.js).
+// sets of the choice of categories (matrix.js), clusters a set spectrally
+// (app.js), or classifies one scan with a model; the engine does the wasm
+// work. A ROS bag is read in slices and its clouds posted one at a time as
+// partial replies, and so is an E57 survey's stations (bagreader.js).
 import init, * as wasm from './pkg/placecat.js';
 import { Describer } from './engine.js';
 import { bagTopics, describeBag, describeSurvey } from './bagreader.js';
@@ -34,6 +34,7 @@ async function run(task, partial, clock, file) {
   }
   if (task.type === 'deltaRows') return describer.deltaRows(task.key, task.params, task.descriptorJsons, task.rows);
   if (task.type === 'references') return describer.referenceDispersions(task.key, task.params, task.descriptorJsons, task.seed, task.which, task.restarts);
+  if (task.type === 'spectral') return describer.spectral(task.params, task.descriptorJsons, task.matrix, task.k, task.seed);
   if (task.type === 'simulate') return describer.simulate(task, task.params, task.previewPoints);
   if (task.type === 'classify') {
     return describer.classify(new Uint8Array(await /** @type {Promise<ArrayBuffer>} */ (file)), task.name, task.modelJson);
@@ -60,7 +61,7 @@ async function runAndReply(id, task, file, arrived) {
   try {
     const r = await run(task, (p, transfer) => self.postMessage({ id, partial: p }, { transfer }), clock, file);
     clock.end = now();
-    const transfer = r instanceof Float32Array || r instanceof Float64Array ? [r.buffer] : r && 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
+    const transfer = r instanceof Float32Array || r instanceof Float64Array || r instanceof Int32Array ? [r.buffer] : r && 'preview' in r ? [r.preview.buffer, ...(r.site ? [r.site.buffer] : [])] : [];
     self.postMessage({ id, ok: true, result: r, clock }, { transfer });
   } catch (err) {
     self.postMessage({ id, ok: false, error: String(/** @type {any} */ (err)?.message ?? err) });

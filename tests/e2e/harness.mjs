@@ -96,6 +96,18 @@ export function inkedPixels(page, id) {
   }, id);
 }
 
+/**
+ * Do `action` (a change that clusters the set again) and wait until the
+ * latest clustering settled (`body[data-clustered]`, app.js): a spectral
+ * clustering comes back from a worker.
+ * @param {import('playwright-core').Page} page @param {() => Promise<unknown>} action
+ */
+export async function afterClustering(page, action, timeout = 60000) {
+  const asked = await page.evaluate(() => Number(document.body.dataset.clustered || 0));
+  await action();
+  await page.waitForFunction((n) => Number(document.body.dataset.clustered || 0) > n, asked, { timeout });
+}
+
 /** Do `action`, then wait until the page has finished one more run. */
 export async function afterRun(page, action, timeout = 120000) {
   const runs = await page.evaluate(() => Number(document.body.dataset.runs || 0));

@@ -5,7 +5,7 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { formatCsv, parseCsv } from '../../www/csv.js';
-import { start, inkedPixels, afterRun, crashOn, ARTIFACTS, REAL } from './harness.mjs';
+import { start, inkedPixels, afterRun, afterClustering, crashOn, ARTIFACTS, REAL } from './harness.mjs';
 
 const groups = readFileSync(join(REAL, 'groups.csv'), 'utf8').trim().split('\n').slice(1).map((l) => l.split(',')[0]);
 const tmp = mkdtempSync(join(tmpdir(), 'placecat-e2e-'));
@@ -259,21 +259,47 @@ test('k-means on the demo: "k-means++, best of 10" keeps the cheapest of ten run
   }
 });
 
-test('spectral clustering on the demo: its own k and seed, the page evaluates it', async () => {
-  await h.page.selectOption('#method', 'spectral'); // k 5
+test('spectral clustering on the demo, in a worker: its own k and seed, the page evaluates it', async () => {
+  await afterClustering(h.page, () => h.page.selectOption('#method', 'spectral')); // k 5
+  /** @param {string} k */
+  const spectralK = (k) => afterClustering(h.page, async () => {
+    await h.page.fill('#sp-k', k);
+    await h.page.dispatchEvent('#sp-k', 'change');
+  });
   try {
     assert.ok(await h.page.isVisible('#sp-k') && !(await h.page.isVisible('#km-seed')));
     // Measured on this demo (as tests/js/engine.test.mjs measures the engine):
     // one corridor scan with another kind at k 5, none at k 8.
     assert.match(await h.page.textContent('#accuracy'), /accuracy 97\.5 %/);
-    await h.page.fill('#sp-k', '8');
-    await h.page.dispatchEvent('#sp-k', 'change');
+    await spectralK('8');
     assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);
-    await h.page.fill('#sp-k', '41');
-    await h.page.dispatchEvent('#sp-k', 'change');
+    await spectralK('41');
     assert.match(await h.page.textContent('#cluster-status'), /k = 41 is more than the 40 scans/);
+    // Two asked for at once: the later one is shown, whichever worker ends first.
+    await afterClustering(h.page, () => h.page.evaluate(() => {
+      const k = /** @type {HTMLInputElement} */ (document.getElementById('sp-k'));
+      for (const v of ['8', '5']) {
+        k.value = v;
+        k.dispatchEvent(new Event('change'));
+      }
+    }));
+    assert.match(await h.page.textContent('#accuracy'), /accuracy 97\.5 %/);
+    assert.equal(await categories(), 5);
+    // Cancel while the worker clusters (clicked in the same task as the change,
+    // so before any worker could answer): the status says so, the last labels stay,
+    // and the next change clusters again in the replaced workers.
+    await afterClustering(h.page, () => h.page.evaluate(() => {
+      const k = /** @type {HTMLInputElement} */ (document.getElementById('sp-k'));
+      k.value = '8';
+      k.dispatchEvent(new Event('change'));
+      document.getElementById('cancel')?.click();
+    }));
+    assert.match(await h.page.textContent('#cluster-status'), /^Spectral clustering cancelled/);
+    assert.equal(await categories(), 5);
+    await spectralK('8');
+    assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);
   } finally {
-    await h.page.fill('#sp-k', '5');
+    await spectralK('5');
     await h.page.selectOption('#method', 'hkmeans');
   }
 });

@@ -110,11 +110,39 @@ test('spectral clustering on the raw DescriptorSet: plain labels and eigenvalues
   });
 });
 
-test('the page clusters spectrally up to its limit and says why not above it', () => {
+test('a worker clusters spectrally with the page\'s matrix: the same labels, the core\'s errors', () => {
   const e = new Engine(wasm);
-  e.load(params, scans.map((s) => s.descriptorJson));
-  assert.equal(e.evaluate(scans.map((s) => s.label), e.spectral(8, 0)).accuracy, 1);
-  assert.throws(() => e.spectral(8, 0, 39), /^RangeError: spectral clustering on the page takes at most 39 scans .*got 40/);
+  const jsons = scans.map((s) => s.descriptorJson);
+  e.load(params, jsons);
+  const matrix = e.deltaMatrix();
+  assert.ok(matrix instanceof Float32Array && matrix.length === 40 * 40);
+  const d = new Describer(wasm);
+  for (const seed of [0, 3]) {
+    const inWorker = d.spectral(params, jsons, matrix, 5, seed);
+    assert.ok(inWorker instanceof Int32Array);
+    // The labels of the set's own spectral clustering (plain wasm, as the test above).
+    const own = scoped(new wasm.DescriptorSet(params, undefined), (set) => {
+      for (const json of jsons) set.addJson(json);
+      return set.spectral(5, seed).labels;
+    });
+    assert.deepEqual([...inWorker], [...own], `seed ${seed}`);
+    // Seed 0: one corridor scan with another kind (measured; the e2e test sees it on the page).
+    if (seed === 0) assert.equal(e.evaluate(scans.map((s) => s.label), inWorker).accuracy, 0.975);
+  }
+  // A matrix that is not the set's is refused (spot-checked against the set's own Delta).
+  const halves = new Float32Array(40 * 40).map((_, at) => {
+    const [i, j] = [Math.floor(at / 40), at % 40];
+    return i === j ? 0 : (i < 20) === (j < 20) ? 0.1 : 1;
+  });
+  assert.throws(() => d.spectral(params, jsons, halves, 2, 0), /^Error: mismatch: Delta matrix: \(\d+, \d+\) is 0\.1?, this set's Delta there is .*not this set's/);
+  assert.throws(() => d.spectral(params, jsons, halves.slice(1), 5, 0), /a Delta matrix of 1599 values for 40 scans/);
+  assert.throws(() => d.spectral(params, jsons, matrix, 41, 0), /^Error: invalid parameter: k = 41 is more than the 40 scans/);
+  // Above the core's limit, its own refusal (before any eigen-decomposition).
+  // (2001 copies of the 40 scans: their matrix is the 40 scans' one, tiled.)
+  const n = 2001;
+  const many = Array.from({ length: n }, (_, i) => jsons[i % 40]);
+  const tiled = new Float32Array(n * n).map((_, at) => matrix[(Math.floor(at / n) % 40) * 40 + ((at % n) % 40)]);
+  assert.throws(() => d.spectral(params, many, tiled, 5, 0), /^Error: invalid parameter: spectral clustering takes at most 2000 scans .*got 2001/);
   e.dispose();
 });
 
