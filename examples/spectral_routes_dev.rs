@@ -1,0 +1,146 @@
+//! Issue 18, a development look after the nineteenth round (seeds 1-6
+//! only; it changes no preset and tunes nothing): why spectral clustering
+//! does poorly along routes, and whether leaving a scan's own stretch of
+//! route out of its scale helps. Its guess (docs/spectral.md): consecutive
+//! scans are near copies, so a scan's 7th neighbour is a scan of the same
+//! stretch and its scale that of a stretch, not of a place; the graph is
+//! then a chain, and its leading eigenvectors cut the route into pieces.
+//! A variant was tried in this look's first run and not kept: scans
+//! within the window of the rounds' route 1-NN (25 of 300 scans, issue 18's
+//! rule; 9 of these 100) left out of a scan's neighbours for its scale
+//! (a `window` field of `SpectralParams`, since removed). Its figures are
+//! in the report's text.
+//!
+//!     cargo run --release --example spectral_routes_dev   # -> docs/spectral-routes-dev.md
+
+use placecat::cluster::{KMeans, KMeansParams, Spectral, SpectralParams};
+use placecat::distance::Space;
+use placecat::*;
+use std::fmt::Write;
+
+include!("common/dev_look.rs");
+
+/// The route families and the presets the rounds ran on them.
+const ROUTES: &[(&str, &[&str])] = &[
+    ("warehouse", &["indoor", "indoor_plus"]),
+    ("outdoor", &["outdoor", "outdoor_near"]),
+];
+
+/// The smallest group's share of the scans (%).
+fn smallest<T: Ord + Clone>(labels: &[T]) -> f64 {
+    let mut sorted = labels.to_vec();
+    sorted.sort();
+    let sizes = sorted.chunk_by(|a, b| a == b).map(<[T]>::len);
+    100.0 * sizes.min().unwrap_or(0) as f64 / labels.len() as f64
+}
+
+/// The share of the smallest true kind's scans (%) in a category where
+/// that kind is the most common: 0 when the kind is lost in others.
+fn smallest_found(truth: &[String], labels: &[i32]) -> f64 {
+    let count = |f: &dyn Fn(usize) -> bool| (0..truth.len()).filter(|&i| f(i)).count();
+    let Some(kind) = (truth.iter()).min_by_key(|t| (count(&|i| &truth[i] == *t), (*t).clone()))
+    else {
+        return f64::NAN;
+    };
+    let majority = |label: i32| {
+        (truth.iter())
+            .max_by_key(|t| {
+                (
+                    count(&|i| labels[i] == label && &truth[i] == *t),
+                    std::cmp::Reverse((*t).clone()),
+                )
+            })
+            .cloned()
+    };
+    let of_kind: Vec<usize> = (0..truth.len()).filter(|&i| &truth[i] == kind).collect();
+    let found = (of_kind.iter())
+        .filter(|&&i| majority(labels[i]).as_ref() == Some(kind))
+        .count();
+    100.0 * found as f64 / of_kind.len() as f64
+}
+
+/// Written after the run.
+const SHOWS: &str = "On these routes spectral clustering is below best of 10 on the warehouse with its own sensor (`indoor_plus` 73.5 against 99.4 %, `indoor` 56.9 against 68.7 %) and with 32 beams and `indoor` (61.0 against 63.9 %), and within a point of it on the other five rows; the two outdoor sets near 55 % of the test seeds have no match here. The guess of docs/spectral.md, that neighbourhoods chain along the route, does not fit: chaining would cut the route into few long pieces, while spectral clustering's labels change about as often as best of 10's (7.3 against 5.0 pieces with `indoor_plus` and the own sensor, 12.2 against 11.2 with `indoor`; 5 true pieces). What differs is the smallest kind, the airlock (10.3 % of the scans): with `indoor_plus` and the own sensor best of 10 puts 97.2 % of its scans in a category of their own, spectral clustering 16.7 %, its smallest category (15.7 % of the scans) a piece of a hall. The leading eigenvectors of the normalised affinity favour groups of similar weight (the balance of a normalised cut: Shi and Malik 2000, von Luxburg 2007), so a kind of a tenth of the scans goes in with another and a hall is split. A variant in this look's first run took a scan's neighbours for its scale only from scans more than 9 apart along the route (the window of the rounds' route 1-NN): worse on the warehouse with `indoor_plus` (63.7 and 59.9 % with the own sensor and 32 beams, against 73.5 and 85.2 %), a little better with `indoor` (57.5 and 64.2 against 56.9 and 61.0 %), outdoors within 0.1 point; it was not kept. The advice stands, for a reason now seen: spectral clustering is not for sets with a small kind, such as a route's airlock or passage; the tree or k-means there.";
+
+/// Pieces of a route: 1 + the times the label changes from one scan to the next.
+fn pieces<T: PartialEq>(labels: &[T]) -> usize {
+    1 + labels.windows(2).filter(|w| w[0] != w[1]).count()
+}
+
+fn main() -> Res<()> {
+    check_dev()?;
+    let t0 = std::time::Instant::now();
+    let mut table = String::new();
+    for f in families()
+        .into_iter()
+        .filter(|f| ROUTES.iter().any(|r| r.0 == f.name))
+    {
+        let presets: Vec<String> = (ROUTES.iter().find(|r| r.0 == f.name))
+            .map(|r| r.1.iter().map(|p| p.to_string()).collect())
+            .unwrap_or_default();
+        let sensors = std::iter::once(Sensor::Own).chain(f.sensors.iter().copied());
+        for sensor in sensors.collect::<Vec<_>>() {
+            // Per preset and seed: the columns of the report (below).
+            let mut rows = vec![[(); 10].map(|_| Vec::<f64>::new()); presets.len()];
+            for &seed in DEV_SEEDS {
+                let set = describe_set(&f, sensor, seed, &presets)?;
+                for (name, params, descriptors) in &set.presets {
+                    let p = presets.iter().position(|x| x == name).ok_or("preset")?;
+                    let space = Space::new(descriptors, DistanceOptions::from(params))?;
+                    let k = set.kinds;
+                    let best = over_seeds(&set.truth, |s| {
+                        Ok(KMeans::fit(&space, &KMeansParams::new(k).seed(s).restarts(10))?.labels)
+                    })?;
+                    let matrix = space.matrix();
+                    let spectral = over_seeds(&set.truth, |s| {
+                        Ok(Spectral::fit(&matrix, &SpectralParams::new(k).seed(s))?.labels)
+                    })?;
+                    let first = Spectral::fit(&matrix, &SpectralParams::new(k))?.labels;
+                    let km0 = KMeans::fit(&space, &KMeansParams::new(k).restarts(10))?.labels;
+                    let r = &mut rows[p];
+                    r[0].push(best.accuracy);
+                    r[1].push(spectral.accuracy);
+                    r[2].push(pieces(&set.truth) as f64);
+                    r[3].push(pieces(&km0) as f64);
+                    r[4].push(pieces(&first) as f64);
+                    r[5].push(smallest(&set.truth));
+                    r[6].push(smallest(&km0));
+                    r[7].push(smallest(&first));
+                    r[8].push(smallest_found(&set.truth, &km0));
+                    r[9].push(smallest_found(&set.truth, &first));
+                }
+            }
+            for (p, r) in rows.iter().enumerate() {
+                let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+                let share = |v: &[f64]| pct(mean(v) / 100.0);
+                let cells = [
+                    format!("`{}`", presets[p]),
+                    pct(mean(&r[0])),
+                    pct(mean(&r[1])),
+                    r[1].iter().map(|x| pct(*x)).collect::<Vec<_>>().join(", "),
+                    [2, 3, 4].map(|c| format!("{:.1}", mean(&r[c]))).join(" | "),
+                    [5, 6, 7, 8, 9].map(|c| share(&r[c])).join(" | "),
+                ];
+                eprintln!(
+                    "{} {}: {} ({:.0} s)",
+                    f.name,
+                    sensor.name(),
+                    cells.join(" | "),
+                    t0.elapsed().as_secs_f64()
+                );
+                table_row(&mut table, &f, sensor, &cells)?;
+            }
+        }
+    }
+    let mut o = String::new();
+    writeln!(
+        o,
+        "# Spectral clustering along routes, a look (issue 18, after the nineteenth round)\n"
+    )?;
+    writeln!(o, "{DEV_NOTE} Regenerate with `cargo run --release --example spectral_routes_dev` ({:.0} s). The route rows of the eighteenth and nineteenth rounds (100 scans a route, k the true number of kinds), development seeds 1-6: k-means++ best of 10 and spectral clustering, each the mean over clustering seeds 0-9, and spectral clustering on each seed. Then, with clustering seed 0: pieces, 1 + the times the label changes from one scan to the next along the route (the truth's, best of 10's, spectral clustering's); smallest, the share of the scans in the smallest true kind and in the smallest category of each; found, the share of the smallest kind's scans in a category where that kind is the most common (0 when it is lost in the others).\n", t0.elapsed().as_secs_f64())?;
+    writeln!(o, "**What it shows** (written after the run): {SHOWS}\n")?;
+    writeln!(o, "| row | preset | best of 10 % | spectral % | spectral per seed % | true pieces | best of 10's | spectral's | smallest kind % | best of 10's smallest % | spectral's smallest % | smallest kind found, best of 10 % | found, spectral % |")?;
+    writeln!(o, "|---|---|---|---|---|---|---|---|---|---|---|---|---|")?;
+    o.push_str(&table);
+    write_doc("spectral-routes-dev.md", &o)
+}
