@@ -3,7 +3,7 @@
 // the view (view.js) shows the state. Load scans, describe them in a worker
 // pool, cluster, and let the user name categories.
 import init, * as wasm from './pkg/placecat.js';
-import { Engine } from './engine.js';
+import { Engine, SPECTRAL_LIMIT } from './engine.js';
 import { WorkerPool } from './pool.js';
 import { describeInputs } from './describe.js';
 import { importNames } from './imports.js';
@@ -44,14 +44,21 @@ let references = null;
  * @type {{how: {k: number} | {threshold: number}, by: State['cutBy']} | null}
  */
 let askedCut = null;
+/** Clusterings asked for so far (and new runs): a clustering that ends after a newer one was asked for is dropped. */
+let clusterings = 0;
 /**
- * The spectral clustering a worker runs for the page, until it settles: a new
- * run or Cancel cancels it, a newer clustering supersedes it.
- * @type {Promise<Int32Array> | null}
+ * The spectral clusterings the workers run for the page, until each settles:
+ * a newer clustering stops them (pool.stop), a new run or Cancel cancels them.
+ * @type {Set<Promise<Int32Array>>}
  */
-let spectralTask = null;
+const spectralTasks = new Set();
 /** Whether the pool works for the page (describing, the run's Delta matrix or reference sets, a spectral clustering). */
-const poolBusy = () => state.running || tailOf !== null || spectralTask !== null;
+const poolBusy = () => state.running || tailOf !== null || spectralTasks.size > 0;
+/** A new run cancels what the pool does for the page; a spectral clustering it stops is superseded, not "cancelled". */
+function cancelForNewRun() {
+  clusterings++;
+  if (poolBusy()) pool.cancel();
+}
 /** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
 let unsaved = null;
 const engine = new Engine(wasm);
@@ -73,10 +80,12 @@ const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, 
   depth: 8,
   bytes: (task) => task.file?.size ?? 0,
   maxBytes: 32 * 2 ** 20,
-  alone: (task) => task.type === 'bag' || task.type === 'survey' || task.type === 'bagTopics' || oneAtATime(task),
+  alone: (task) => task.type === 'bag' || task.type === 'survey' || task.type === 'bagTopics' || task.type === 'spectral' || oneAtATime(task),
   prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
-    : null,
+    // A spectral clustering's matrix (a copy, up to 16 MB) is moved, not copied again.
+    : task.type === 'spectral' ? Promise.resolve({ task, transfer: [task.matrix.buffer] })
+      : null,
 });
 const view = new View({
   onThreshold: (t) => cutTree({ threshold: t }, 'threshold'),
@@ -111,7 +120,7 @@ async function loadFiles(list) {
     return;
   }
   const names = scans.map((s) => baseName(s.name));
-  if (poolBusy()) pool.cancel(); // a bag's topics are listed in the pool, before the run
+  cancelForNewRun(); // a bag's topics are listed in the pool, before the run
   const inputs = await chooseBagReading(pool, scans.map((s, i) => ({ name: names[i], file: s.file })));
   if (!inputs) return; // files dropped again while a bag's topic was asked for
   const run = { datasetId: datasetId(names), demo: null, inputs };
@@ -156,7 +165,7 @@ function startDemo(scene) {
  * @param {{datasetId: string, demo: State['demo'], inputs: import('./state.js').Input[]}} [run]
  */
 async function describeAll({ datasetId, demo, inputs } = state, { suggest = false, withPosesFile = false, fromFiles = false } = {}) {
-  if (poolBusy()) pool.cancel();
+  cancelForNewRun();
   askedCut = null;
   clearStages(fromFiles ? ['placecat:files'] : []);
   let params;
@@ -311,9 +320,6 @@ function workersDispersions(seed, restarts) {
   return r && r.set === state.set && r.seed === seed && r.restarts === restarts ? r.dispersions : null;
 }
 
-/** Clusterings asked for so far: a spectral one that comes back after a newer one was asked for is dropped. */
-let clusterings = 0;
-
 /**
  * Cluster the set by the method shown; the first cut of a tree waits for the
  * workers' reference sets, if they compute them, and a spectral clustering for
@@ -322,15 +328,17 @@ let clusterings = 0;
  */
 async function cluster() {
   const mine = ++clusterings;
+  document.body.dataset.asked = String(mine);
+  for (const task of spectralTasks) pool.stop(task);
   try {
-    await clusterBy(view.method());
+    await clusterBy(view.method(), mine);
   } finally {
     if (mine === clusterings) document.body.dataset.clustered = String(mine);
   }
 }
 
-/** @param {ReturnType<View['method']>} m */
-async function clusterBy(m) {
+/** @param {ReturnType<View['method']>} m @param {number} mine this clustering's number (`clusterings`) */
+async function clusterBy(m, mine) {
   if (state.scans.length === 0) {
     view.status('No described scans yet.');
     return render();
@@ -348,7 +356,7 @@ async function clusterBy(m) {
       const tree = state.tree;
       const pending = workersDispersions(m.hkSeed, restarts);
       const dispersions = pending && (await pending);
-      if (state.tree !== tree) return; // clustered again meanwhile
+      if (state.tree !== tree || mine !== clusterings) return; // clustered again meanwhile (a spectral clustering sets no tree until it ends)
       state = S.withFirstCut(state, engine.suggestCategories(dispersions, m.hkSeed, restarts));
       stageSince('choose', start); // with the wait for the workers
       // The user cut the tree meanwhile (or before it existed): their cut stays; the choice is only recorded.
@@ -356,7 +364,7 @@ async function clusterBy(m) {
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
     const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed, m.restarts)
-      : m.method === 'spectral' ? await spectralInWorker(m.spK, m.spSeed)
+      : m.method === 'spectral' ? await spectralInWorker(m.spK, m.spSeed, mine)
         : engine.dbscan(m.eps, m.minPoints);
     if (!labels) return; // a spectral clustering superseded or cancelled
     state = S.withLabels(state, labels, engine.medoids(labels));
@@ -368,22 +376,25 @@ async function clusterBy(m) {
 
 /**
  * Spectral clustering of the page's set in a worker: it grows with the cube of
- * the scans (in Node's wasm 1.5 s for 1000), so on the page's thread it would
- * hold the page. The worker gets the set's Delta matrix, computed once already.
- * Resolves to null when a newer clustering, a new run or Cancel came meanwhile.
- * @param {number} k @param {number} seed @returns {Promise<Int32Array | null>}
+ * the scans (in Node's wasm 1.4 s for 1000, 11 s for 2000), so on the page's
+ * thread it would hold the page. The worker gets the set's Delta matrix,
+ * computed once already. Resolves to null when a newer clustering, a new run
+ * or Cancel came meanwhile.
+ * @param {number} k @param {number} seed @param {number} mine this clustering's number (`clusterings`)
+ * @returns {Promise<Int32Array | null>}
  */
-async function spectralInWorker(k, seed) {
-  const mine = clusterings;
+async function spectralInWorker(k, seed, mine) {
   const set = state.set;
   const superseded = () => mine !== clusterings || state.set !== set;
   const n = state.scans.length;
+  // Refused here, before the matrix is copied out for a worker (the core refuses too).
+  if (n > SPECTRAL_LIMIT) throw new RangeError(`spectral clustering takes at most ${SPECTRAL_LIMIT} scans (it grows with the cube of their number), got ${n}; use the tree or k-means`);
   const start = performance.now();
   const task = pool.run({
     type: 'spectral', params: /** @type {S.State['params'] & {}} */ (state.params), descriptorJsons: state.scans.map((r) => r.descriptorJson),
     matrix: engine.deltaMatrix(), k, seed,
   });
-  spectralTask = task;
+  spectralTasks.add(task);
   view.status(`Spectral clustering of ${n} ${n === 1 ? 'scan' : 'scans'} into ${k} in a worker...`);
   try {
     const labels = await task;
@@ -393,12 +404,12 @@ async function spectralInWorker(k, seed) {
   } catch (e) {
     if (superseded()) return null;
     if (/** @type {Error} */ (e).message === 'cancelled') {
-      view.status(`Spectral clustering cancelled; choose k or the method again to run it.`);
+      view.status('Spectral clustering cancelled; choose k or the method again to run it.');
       return null;
     }
     throw e;
   } finally {
-    if (spectralTask === task) spectralTask = null;
+    spectralTasks.delete(task);
   }
 }
 

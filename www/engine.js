@@ -45,6 +45,9 @@ function checkRuns(restarts) {
   }
 }
 
+/** The most scans the core clusters spectrally (its `MAX_SCANS`; the engine's tests hold the two equal). */
+export const SPECTRAL_LIMIT = 2000;
+
 /** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
 export class Slot {
   /** @type {T | null} */

@@ -8,7 +8,8 @@
 // A worker that dies (an uncaught error, out of memory) is replaced; a task
 // it held alone fails, tasks it held together run again, each alone, so
 // that the one that kills a worker is the one that fails. A task may send
-// partial replies before its result (a bag's clouds, bag.js).
+// partial replies before its result (a bag's clouds, bag.js). One task can
+// be stopped alone (`stop`: a spectral clustering a newer one supersedes).
 
 /** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, alone: boolean}} Job */
 /** @typedef {{worker: Worker, jobs: Job[]}} WorkerSlot `jobs`: posted to the worker, not answered yet, oldest first */
@@ -20,6 +21,9 @@
  */
 
 export class WorkerPool {
+  /** Each task's job, by the promise `run` returned (for `stop`). @type {WeakMap<Promise<any>, Job>} */
+  #jobs = new WeakMap();
+
   /**
    * @param {URL} url the worker module @param {number} [size]
    * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any) => Promise<{task: any, transfer: Transferable[]}> | null,
@@ -117,10 +121,41 @@ export class WorkerPool {
    * @param {any} task @param {(p: any) => void} [onPartial] @returns {Promise<any>}
    */
   run(task, onPartial) {
-    return new Promise((resolve, reject) => {
-      this.queue.push({ id: this.nextId++, task, resolve, reject, onPartial, alone: this.alone(task) });
-      this.#pump();
+    /** @type {Job | undefined} */
+    let job;
+    const promise = new Promise((resolve, reject) => {
+      job = { id: this.nextId++, task, resolve, reject, onPartial, alone: this.alone(task) };
+      this.queue.push(job);
     });
+    this.#jobs.set(promise, /** @type {Job} */ (job));
+    this.#pump();
+    return promise;
+  }
+
+  /**
+   * Stop one task (its promise rejects with 'cancelled'): dropped if queued;
+   * if a worker runs it, that worker is replaced and the other tasks it held
+   * are queued again, first. A task that has settled is left as it is.
+   * @param {Promise<any>} promise what `run` returned
+   */
+  stop(promise) {
+    const job = this.#jobs.get(promise);
+    if (!job) return;
+    const cancelled = new Error('cancelled');
+    const queued = this.queue.indexOf(job);
+    if (queued >= 0) {
+      this.queue.splice(queued, 1);
+      return job.reject(cancelled);
+    }
+    const i = this.slots.findIndex((slot) => slot.jobs.includes(job));
+    if (i < 0) return;
+    const slot = this.slots[i];
+    slot.worker.terminate();
+    const others = slot.jobs.splice(0).filter((j) => j !== job);
+    this.slots[i] = this.#spawn();
+    this.queue.unshift(...others);
+    job.reject(cancelled);
+    this.#pump();
   }
 
   /**

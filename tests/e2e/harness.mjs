@@ -98,14 +98,18 @@ export function inkedPixels(page, id) {
 
 /**
  * Do `action` (a change that clusters the set again) and wait until the
- * latest clustering settled (`body[data-clustered]`, app.js): a spectral
- * clustering comes back from a worker.
+ * clustering it asked for, the latest, settled (app.js: `body[data-asked]`
+ * counts the clusterings asked for, `data-clustered` is the latest once it
+ * settled): a spectral clustering comes back from a worker.
  * @param {import('playwright-core').Page} page @param {() => Promise<unknown>} action
  */
 export async function afterClustering(page, action, timeout = 60000) {
-  const asked = await page.evaluate(() => Number(document.body.dataset.clustered || 0));
+  const asked = () => page.evaluate(() => Number(document.body.dataset.asked || 0));
+  const before = await asked();
   await action();
-  await page.waitForFunction((n) => Number(document.body.dataset.clustered || 0) > n, asked, { timeout });
+  const now = await asked();
+  if (now <= before) throw new Error('the action asked for no clustering');
+  await page.waitForFunction((n) => Number(document.body.dataset.clustered || 0) >= n, now, { timeout });
 }
 
 /** Do `action`, then wait until the page has finished one more run. */

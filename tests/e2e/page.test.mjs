@@ -275,7 +275,7 @@ test('spectral clustering on the demo, in a worker: its own k and seed, the page
     assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);
     await spectralK('41');
     assert.match(await h.page.textContent('#cluster-status'), /k = 41 is more than the 40 scans/);
-    // Two asked for at once: the later one is shown, whichever worker ends first.
+    // Two asked for at once: the later one is shown (the earlier is stopped in its worker).
     await afterClustering(h.page, () => h.page.evaluate(() => {
       const k = /** @type {HTMLInputElement} */ (document.getElementById('sp-k'));
       for (const v of ['8', '5']) {
@@ -285,6 +285,26 @@ test('spectral clustering on the demo, in a worker: its own k and seed, the page
     }));
     assert.match(await h.page.textContent('#accuracy'), /accuracy 97\.5 %/);
     assert.equal(await categories(), 5);
+    // Spectral clustering into 8, then at once k-means into 5 (its labels come
+    // at once): k-means' stay, the spectral clustering does not come back over them.
+    await afterClustering(h.page, () => h.page.evaluate(() => {
+      // Not from a field that has the focus: hidden with k-means' fields shown, it would
+      // send a change of its own (a third clustering, after the spectral one came).
+      /** @type {HTMLElement | null} */ (document.activeElement)?.blur();
+      const k = /** @type {HTMLInputElement} */ (document.getElementById('sp-k'));
+      const method = /** @type {HTMLSelectElement} */ (document.getElementById('method'));
+      k.value = '8';
+      k.dispatchEvent(new Event('change'));
+      method.value = 'kmeans';
+      method.dispatchEvent(new Event('change'));
+    }));
+    await h.page.waitForTimeout(500); // a spectral clustering of these 40 scans takes milliseconds
+    assert.equal(await categories(), 5);
+    assert.equal(await h.page.evaluate(() => document.body.dataset.asked), await h.page.evaluate(() => document.body.dataset.clustered), 'no other clustering was asked for');
+    assert.doesNotMatch(await h.page.textContent('#cluster-status'), /[Ss]pectral/);
+    await afterClustering(h.page, () => h.page.selectOption('#method', 'spectral')); // k 8
+    assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);
+    await spectralK('5');
     // Cancel while the worker clusters (clicked in the same task as the change,
     // so before any worker could answer): the status says so, the last labels stay,
     // and the next change clusters again in the replaced workers.
@@ -299,7 +319,9 @@ test('spectral clustering on the demo, in a worker: its own k and seed, the page
     await spectralK('8');
     assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);
   } finally {
-    await spectralK('5');
+    // The tests after this one expect the page's default method (and spectral k 5);
+    // set without clustering, so that a failure above is the one reported.
+    await h.page.$eval('#sp-k', (e) => { /** @type {HTMLInputElement} */ (e).value = '5'; });
     await h.page.selectOption('#method', 'hkmeans');
   }
 });

@@ -5,7 +5,7 @@
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
-import { Engine, Describer, Slot, scoped } from '../../www/engine.js';
+import { Engine, Describer, Slot, scoped, SPECTRAL_LIMIT } from '../../www/engine.js';
 import { importNames } from '../../www/imports.js';
 import * as S from '../../www/state.js';
 
@@ -143,6 +143,7 @@ test('a worker clusters spectrally with the page\'s matrix: the same labels, the
   const many = Array.from({ length: n }, (_, i) => jsons[i % 40]);
   const tiled = new Float32Array(n * n).map((_, at) => matrix[(Math.floor(at / n) % 40) * 40 + ((at % n) % 40)]);
   assert.throws(() => d.spectral(params, many, tiled, 5, 0), /^Error: invalid parameter: spectral clustering takes at most 2000 scans .*got 2001/);
+  assert.equal(SPECTRAL_LIMIT, 2000, 'the page refuses where the core does');
   e.dispose();
 });
 

@@ -185,6 +185,37 @@ test('cancel rejects the queued and the held tasks and replaces the busy workers
   assert.deepEqual(FakeWorker.all.map((w) => w.terminated), [true, true, false, false]);
 });
 
+test('stop: a queued task is dropped; a running one loses its worker, whose other tasks run again; a settled one is left', async () => {
+  const q = pool(2);
+  const seen = [];
+  /** @type {Record<string, Promise<any>>} what `run` returned, which `stop` takes */
+  const promises = {};
+  for (const name of ['a', 'b', 'c', 'd', 'e']) {
+    promises[name] = q.run({ type: 'describe', name });
+    promises[name].then((r) => seen.push(`ok ${r}`), (e) => seen.push(`${name} ${e.message}`));
+  }
+  const [w0, w1] = FakeWorker.all;
+  assert.deepEqual([w0.held(), w1.held()], [['a', 'c'], ['b', 'd']]);
+  q.stop(promises.e); // queued
+  await settle();
+  assert.deepEqual(seen, ['e cancelled']);
+  q.stop(promises.c); // held by w0 with a
+  await settle();
+  assert.deepEqual(seen, ['e cancelled', 'c cancelled']);
+  assert.equal(w0.terminated, true);
+  assert.equal(w1.terminated, false);
+  const w2 = FakeWorker.all[2];
+  assert.deepEqual(w2.held(), ['a'], 'a runs again on the new worker');
+  w2.answer();
+  w1.answer();
+  await settle();
+  q.stop(promises.a); // settled: nothing happens
+  assert.equal(w2.terminated, false);
+  w1.answer();
+  await settle();
+  assert.deepEqual(seen, ['e cancelled', 'c cancelled', 'ok a', 'ok b', 'ok d']);
+});
+
 test('a batch hands its items over together, once per tick, and at once on flush', async () => {
   const calls = [];
   const b = new Batch(20, (items) => calls.push(items));
