@@ -57,6 +57,8 @@ const poolBusy = () => state.running || tailOf !== null || spectralTasks.size > 
 /** A new run cancels what the pool does for the page; a spectral clustering it stops is superseded, not "cancelled". */
 function cancelForNewRun() {
   clusterings++;
+  // Nothing is left to wait for (scripts wait until clustered reaches asked).
+  document.body.dataset.asked = document.body.dataset.clustered = String(clusterings);
   if (poolBusy()) pool.cancel();
 }
 /** The running run's batch of results to save, flushed when the page is hidden (a reload, a closed tab). @type {Batch<any> | null} */
@@ -323,13 +325,18 @@ function workersDispersions(seed, restarts) {
 /**
  * Cluster the set by the method shown; the first cut of a tree waits for the
  * workers' reference sets, if they compute them, and a spectral clustering for
- * its worker. Once the latest has settled, `body[data-clustered]` says how many
- * were asked for (for scripts that drive the page, and the e2e tests).
+ * its worker. For scripts that drive the page (and the e2e tests), `body`'s
+ * data: `asked`, the clusterings asked for; `clustered`, the same once the
+ * latest has settled; `spectral`, spectral clusterings in flight; `stopped`,
+ * those a newer clustering stopped.
  */
 async function cluster() {
   const mine = ++clusterings;
   document.body.dataset.asked = String(mine);
-  for (const task of spectralTasks) pool.stop(task);
+  for (const task of spectralTasks) {
+    pool.stop(task);
+    document.body.dataset.stopped = String(Number(document.body.dataset.stopped || 0) + 1);
+  }
   try {
     await clusterBy(view.method(), mine);
   } finally {
@@ -395,6 +402,7 @@ async function spectralInWorker(k, seed, mine) {
     matrix: engine.deltaMatrix(), k, seed,
   });
   spectralTasks.add(task);
+  document.body.dataset.spectral = String(spectralTasks.size);
   view.status(`Spectral clustering of ${n} ${n === 1 ? 'scan' : 'scans'} into ${k} in a worker...`);
   try {
     const labels = await task;
@@ -410,6 +418,7 @@ async function spectralInWorker(k, seed, mine) {
     throw e;
   } finally {
     spectralTasks.delete(task);
+    document.body.dataset.spectral = String(spectralTasks.size);
   }
 }
 

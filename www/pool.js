@@ -11,7 +11,7 @@
 // partial replies before its result (a bag's clouds, bag.js). One task can
 // be stopped alone (`stop`: a spectral clustering a newer one supersedes).
 
-/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, alone: boolean}} Job */
+/** @typedef {{id: number, task: any, resolve: (r: any) => void, reject: (e: Error) => void, onPartial?: (p: any) => void, posted?: number, sent?: boolean, alone: boolean}} Job `sent`: posted to its worker */
 /** @typedef {{worker: Worker, jobs: Job[]}} WorkerSlot `jobs`: posted to the worker, not answered yet, oldest first */
 /**
  * When a task was posted, came to its worker, started, had its file's
@@ -73,7 +73,11 @@ export class WorkerPool {
       const i = this.slots.indexOf(slot);
       if (i >= 0) this.slots[i] = this.#spawn();
       if (jobs.length === 1) jobs[0].reject(new Error(`the worker failed: ${e?.message || 'crashed or ran out of memory'}`));
-      else this.queue.unshift(...jobs.map((j) => ({ ...j, alone: true })));
+      else {
+        // The jobs themselves (not copies), so that `stop` still finds them.
+        for (const j of jobs) Object.assign(j, { alone: true, sent: false });
+        this.queue.unshift(...jobs);
+      }
       this.#pump();
     };
     worker.onerror = die;
@@ -104,9 +108,9 @@ export class WorkerPool {
   #post(slot, job) {
     job.posted = performance.timeOrigin + performance.now();
     const prepared = this.prepare(job.task);
-    if (!prepared) return slot.worker.postMessage({ id: job.id, task: job.task });
+    if (!prepared) return this.#send(slot, job, job.task, []);
     prepared.then(({ task, transfer }) => {
-      if (slot.jobs.includes(job)) slot.worker.postMessage({ id: job.id, task }, transfer);
+      if (slot.jobs.includes(job)) this.#send(slot, job, task, transfer);
     }, (e) => {
       const i = slot.jobs.indexOf(job);
       if (i < 0) return;
@@ -114,6 +118,23 @@ export class WorkerPool {
       job.reject(e);
       this.#pump();
     });
+  }
+
+  /**
+   * Post a job to its worker; one that cannot be posted (a value that does not
+   * clone, a buffer moved already) fails alone, and its place goes to the next.
+   * @param {WorkerSlot} slot @param {Job} job @param {any} task @param {Transferable[]} transfer
+   */
+  #send(slot, job, task, transfer) {
+    try {
+      slot.worker.postMessage({ id: job.id, task }, transfer);
+      job.sent = true;
+    } catch (e) {
+      const i = slot.jobs.indexOf(job);
+      if (i >= 0) slot.jobs.splice(i, 1);
+      job.reject(/** @type {Error} */ (e));
+      queueMicrotask(() => this.#pump()); // not inside the pump that may be posting it
+    }
   }
 
   /**
@@ -133,8 +154,8 @@ export class WorkerPool {
   }
 
   /**
-   * Stop one task (its promise rejects with 'cancelled'): dropped if queued;
-   * if a worker runs it, that worker is replaced and the other tasks it held
+   * Stop one task (its promise rejects with 'cancelled'): dropped if queued
+   * or not posted yet; if a worker holds it, that worker is replaced and the other tasks it held
    * are queued again, first. A task that has settled is left as it is.
    * @param {Promise<any>} promise what `run` returned
    */
@@ -150,6 +171,12 @@ export class WorkerPool {
     const i = this.slots.findIndex((slot) => slot.jobs.includes(job));
     if (i < 0) return;
     const slot = this.slots[i];
+    if (!job.sent) {
+      // Its file or matrix is still being prepared: the worker never got it.
+      slot.jobs.splice(slot.jobs.indexOf(job), 1);
+      job.reject(cancelled);
+      return this.#pump();
+    }
     slot.worker.terminate();
     const others = slot.jobs.splice(0).filter((j) => j !== job);
     this.slots[i] = this.#spawn();

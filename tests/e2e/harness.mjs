@@ -102,6 +102,7 @@ export function inkedPixels(page, id) {
  * counts the clusterings asked for, `data-clustered` is the latest once it
  * settled): a spectral clustering comes back from a worker.
  * @param {import('playwright-core').Page} page @param {() => Promise<unknown>} action
+ * @returns {Promise<number>} the clusterings asked for so far
  */
 export async function afterClustering(page, action, timeout = 60000) {
   const asked = () => page.evaluate(() => Number(document.body.dataset.asked || 0));
@@ -110,6 +111,7 @@ export async function afterClustering(page, action, timeout = 60000) {
   const now = await asked();
   if (now <= before) throw new Error('the action asked for no clustering');
   await page.waitForFunction((n) => Number(document.body.dataset.clustered || 0) >= n, now, { timeout });
+  return now;
 }
 
 /** Do `action`, then wait until the page has finished one more run. */

@@ -275,7 +275,9 @@ test('spectral clustering on the demo, in a worker: its own k and seed, the page
     assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);
     await spectralK('41');
     assert.match(await h.page.textContent('#cluster-status'), /k = 41 is more than the 40 scans/);
-    // Two asked for at once: the later one is shown (the earlier is stopped in its worker).
+    // Two asked for at once: the later one is shown, the earlier is stopped.
+    const data = () => h.page.evaluate(() => ({ ...document.body.dataset }));
+    const stopped = Number((await data()).stopped || 0);
     await afterClustering(h.page, () => h.page.evaluate(() => {
       const k = /** @type {HTMLInputElement} */ (document.getElementById('sp-k'));
       for (const v of ['8', '5']) {
@@ -285,9 +287,10 @@ test('spectral clustering on the demo, in a worker: its own k and seed, the page
     }));
     assert.match(await h.page.textContent('#accuracy'), /accuracy 97\.5 %/);
     assert.equal(await categories(), 5);
+    assert.equal(Number((await data()).stopped), stopped + 1, 'the clustering into 8 was stopped');
     // Spectral clustering into 8, then at once k-means into 5 (its labels come
     // at once): k-means' stay, the spectral clustering does not come back over them.
-    await afterClustering(h.page, () => h.page.evaluate(() => {
+    const asked = await afterClustering(h.page, () => h.page.evaluate(() => {
       // Not from a field that has the focus: hidden with k-means' fields shown, it would
       // send a change of its own (a third clustering, after the spectral one came).
       /** @type {HTMLElement | null} */ (document.activeElement)?.blur();
@@ -298,9 +301,9 @@ test('spectral clustering on the demo, in a worker: its own k and seed, the page
       method.value = 'kmeans';
       method.dispatchEvent(new Event('change'));
     }));
-    await h.page.waitForTimeout(500); // a spectral clustering of these 40 scans takes milliseconds
+    await h.page.waitForFunction(() => document.body.dataset.spectral === '0'); // none in flight
     assert.equal(await categories(), 5);
-    assert.equal(await h.page.evaluate(() => document.body.dataset.asked), await h.page.evaluate(() => document.body.dataset.clustered), 'no other clustering was asked for');
+    assert.equal(Number((await data()).asked), asked, 'no other clustering was asked for');
     assert.doesNotMatch(await h.page.textContent('#cluster-status'), /[Ss]pectral/);
     await afterClustering(h.page, () => h.page.selectOption('#method', 'spectral')); // k 8
     assert.match(await h.page.textContent('#accuracy'), /accuracy 100\.0 %/);

@@ -216,6 +216,52 @@ test('stop: a queued task is dropped; a running one loses its worker, whose othe
   assert.deepEqual(seen, ['e cancelled', 'c cancelled', 'ok a', 'ok b', 'ok d']);
 });
 
+test('stop finds a task a dead worker left to run again, and one whose preparation is pending (no worker replaced)', async () => {
+  const q = pool(2);
+  const seen = [];
+  const a = q.run({ type: 'describe', name: 'a' });
+  q.run({ type: 'describe', name: 'b' });
+  const c = q.run({ type: 'describe', name: 'c' });
+  for (const [name, p] of [['a', a], ['c', c]]) p.catch((e) => seen.push(`${name} ${e.message}`));
+  const [w0] = FakeWorker.all;
+  assert.deepEqual(w0.held(), ['a', 'c']);
+  w0.die(); // a and c queued again, each alone
+  await settle();
+  q.stop(c);
+  await settle();
+  assert.deepEqual(seen, ['c cancelled']);
+  // Preparation pending: the job is the worker's, but was never posted.
+  let release = () => {};
+  const r = pool(1, { prepare: (t) => t.name === 'slow' ? new Promise((ok) => { release = () => ok({ task: t, transfer: [] }); }) : null });
+  const slow = r.run({ type: 'describe', name: 'slow' });
+  slow.catch((e) => seen.push(`slow ${e.message}`));
+  const [v0] = FakeWorker.all;
+  r.stop(slow);
+  release();
+  await settle();
+  assert.deepEqual(seen, ['c cancelled', 'slow cancelled']);
+  assert.equal(v0.terminated, false, 'the worker that never got it stays');
+  assert.deepEqual(v0.posted, [], 'nor is it posted once prepared');
+});
+
+test('a task that cannot be posted fails alone and the next takes its place', async () => {
+  const q = pool(1);
+  const [w0] = FakeWorker.all;
+  const post = w0.postMessage.bind(w0);
+  w0.postMessage = (m, transfer) => {
+    if (m.task.name === 'bad') throw new Error('could not be cloned');
+    post(m, transfer);
+  };
+  const seen = [];
+  q.run({ type: 'describe', name: 'bad' }).catch((e) => seen.push(`bad ${e.message}`));
+  q.run({ type: 'describe', name: 'next' }).then((r) => seen.push(`ok ${r}`));
+  await settle();
+  assert.deepEqual(w0.held(), ['next']);
+  w0.answer();
+  await settle();
+  assert.deepEqual(seen, ['bad could not be cloned', 'ok next']);
+});
+
 test('a batch hands its items over together, once per tick, and at once on flush', async () => {
   const calls = [];
   const b = new Batch(20, (items) => calls.push(items));
