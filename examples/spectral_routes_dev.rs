@@ -119,13 +119,9 @@ fn table_of(seeds: &[u64], t0: std::time::Instant) -> Res<String> {
                     let p = presets.iter().position(|x| x == name).ok_or("preset")?;
                     let space = Space::new(descriptors, DistanceOptions::from(params))?;
                     let k = set.kinds;
-                    let best = over_seeds(&set.truth, |s| {
-                        Ok(KMeans::fit(&space, &KMeansParams::new(k).seed(s).restarts(10))?.labels)
-                    })?;
+                    let best = best_of_10(&space, &set.truth, k)?;
                     let matrix = space.matrix();
-                    let spectral = over_seeds(&set.truth, |s| {
-                        Ok(Spectral::fit(&matrix, &SpectralParams::new(k).seed(s))?.labels)
-                    })?;
+                    let spectral = spectral_over_seeds(&matrix, &set.truth, k)?;
                     let first = Spectral::fit(&matrix, &SpectralParams::new(k))?.labels;
                     let km0 = KMeans::fit(&space, &KMeansParams::new(k).restarts(10))?.labels;
                     let r = &mut rows[p];

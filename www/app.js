@@ -85,9 +85,9 @@ const pool = new WorkerPool(new URL('./worker.js', import.meta.url), undefined, 
   alone: (task) => task.type === 'bag' || task.type === 'survey' || task.type === 'bagTopics' || task.type === 'spectral' || oneAtATime(task),
   prepare: (task) => task.type === 'describe' && task.file
     ? task.file.arrayBuffer().then((/** @type {ArrayBuffer} */ bytes) => ({ task: { ...task, file: undefined, bytes }, transfer: [bytes] }))
-    // A spectral clustering's matrix (a copy, up to 16 MB) is moved, not copied again.
-    : task.type === 'spectral' ? Promise.resolve({ task, transfer: [task.matrix.buffer] })
-      : null,
+    : null,
+  // A spectral clustering's matrix (a copy, up to 16 MB) is moved, not copied again.
+  transfer: (task) => task.type === 'spectral' ? [task.matrix.buffer] : [],
 });
 const view = new View({
   onThreshold: (t) => cutTree({ threshold: t }, 'threshold'),

@@ -3,7 +3,6 @@
 // temporary); callers get plain JS data. The wasm module is a parameter, so
 // the page passes its web build and the unit tests the Node build.
 
-
 /** @typedef {typeof import('./pkg/placecat.js')} Wasm */
 /** @typedef {import('./pkg/placecat.js').DescriptorParams} DescriptorParams */
 /** @typedef {Required<DescriptorParams>} Params */

@@ -27,13 +27,14 @@ export class WorkerPool {
   /**
    * @param {URL} url the worker module @param {number} [size]
    * @param {{depth?: number, alone?: (task: any) => boolean, prepare?: (task: any) => Promise<{task: any, transfer: Transferable[]}> | null,
-   *   bytes?: (task: any) => number, maxBytes?: number}} [how]
+   *   transfer?: (task: any) => Transferable[], bytes?: (task: any) => number, maxBytes?: number}} [how]
    *   `depth`: tasks a worker holds at once; `alone`: the tasks that get a worker to themselves; `prepare`: work on the
    *   main thread before a task is posted (none: null), e.g. reading its file, whose failure is the task's;
    *   `bytes`: what a task holds in memory (its file), `maxBytes`: a worker takes another task only while the tasks
-   *   it holds stay within this many bytes (it always takes one)
+   *   it holds stay within this many bytes (it always takes one); `transfer`: what a task that needs no
+   *   preparation moves to its worker rather than copies (e.g. a large typed array's buffer)
    */
-  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false, prepare = () => null, bytes = () => 0, maxBytes = Infinity } = {}) {
+  constructor(url, size = Math.max(1, navigator.hardwareConcurrency || 2), { depth = 1, alone = () => false, prepare = () => null, transfer = () => [], bytes = () => 0, maxBytes = Infinity } = {}) {
     this.url = url;
     this.size = size;
     this.depth = depth;
@@ -41,6 +42,7 @@ export class WorkerPool {
     this.maxBytes = maxBytes;
     this.alone = alone;
     this.prepare = prepare;
+    this.transfer = transfer;
     /** @type {Job[]} */
     this.queue = [];
     /** @type {WorkerSlot[]} */
@@ -108,7 +110,7 @@ export class WorkerPool {
   #post(slot, job) {
     job.posted = performance.timeOrigin + performance.now();
     const prepared = this.prepare(job.task);
-    if (!prepared) return this.#send(slot, job, job.task, []);
+    if (!prepared) return this.#send(slot, job, job.task, this.transfer(job.task));
     prepared.then(({ task, transfer }) => {
       if (slot.jobs.includes(job)) this.#send(slot, job, task, transfer);
     }, (e) => {

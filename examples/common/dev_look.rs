@@ -42,9 +42,7 @@ fn write_doc(name: &str, text: &str) -> Res<()> {
 fn kmeans_figures(space: &placecat::distance::Space, truth: &[String], k: usize) -> Res<(f64, f64)> {
     use placecat::cluster::{KMeans, KMeansParams, Seeding};
     let stride = KMeans::fit(space, &KMeansParams::new(k).seeding(Seeding::Stride))?;
-    let best = over_seeds(truth, |s| {
-        Ok(KMeans::fit(space, &KMeansParams::new(k).seed(s).restarts(10))?.labels)
-    })?;
+    let best = best_of_10(space, truth, k)?;
     Ok((once(truth, &stride.labels)?.accuracy, best.accuracy))
 }
 

@@ -42,6 +42,24 @@ pub fn over_seeds(truth: &[String], mut labels: impl FnMut(u64) -> Res<Vec<i32>>
     Ok(m)
 }
 
+/// k-means++ best of 10 runs at `k`, for clustering seeds 0-9.
+#[allow(dead_code)] // the rounds and looks that report it
+pub fn best_of_10(space: &placecat::distance::Space, truth: &[String], k: usize) -> Res<Method> {
+    use placecat::cluster::{KMeans, KMeansParams};
+    over_seeds(truth, |s| {
+        Ok(KMeans::fit(space, &KMeansParams::new(k).seed(s).restarts(10))?.labels)
+    })
+}
+
+/// Spectral clustering (`SpectralParams` defaults) at `k`, for clustering seeds 0-9.
+#[allow(dead_code)] // spectral_round and spectral_routes_dev
+pub fn spectral_over_seeds(matrix: &DistanceMatrix, truth: &[String], k: usize) -> Res<Method> {
+    use placecat::cluster::{Spectral, SpectralParams};
+    over_seeds(truth, |s| {
+        Ok(Spectral::fit(matrix, &SpectralParams::new(k).seed(s))?.labels)
+    })
+}
+
 /// One deterministic clustering, as a [`Method`].
 pub fn once(truth: &[String], labels: &[i32]) -> Res<Method> {
     let e = evaluate(truth, labels)?;

@@ -216,6 +216,15 @@ test('stop: a queued task is dropped; a running one loses its worker, whose othe
   assert.deepEqual(seen, ['e cancelled', 'c cancelled', 'ok a', 'ok b', 'ok d']);
 });
 
+test('transfer: what a task moves to its worker is posted as transferred', () => {
+  const matrix = new Float32Array(4);
+  const q = pool(1, { transfer: (t) => (t.matrix ? [t.matrix.buffer] : []) });
+  q.run({ type: 'spectral', name: 'm', matrix });
+  q.run({ type: 'describe', name: 'd' });
+  const [w0] = FakeWorker.all;
+  assert.deepEqual(w0.posted.map((p) => p.transfer), [[matrix.buffer]], 'the second waits for the first');
+});
+
 test('stop finds a task a dead worker left to run again, and one whose preparation is pending (no worker replaced)', async () => {
   const q = pool(2);
   const seen = [];

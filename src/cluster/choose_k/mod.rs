@@ -66,6 +66,8 @@ mod gap;
 mod heights;
 mod silhouette;
 
+pub use silhouette::mean_silhouette;
+
 use crate::cluster::hkmeans::{HkMeansParams, EXACT_DIAMETER_LIMIT};
 use crate::cluster::{HierarchicalKMeans, KMeans, KMeansParams, Tree};
 use crate::distance::DistanceMatrix;

@@ -6,7 +6,7 @@
 
 /// Mean silhouette of `labels` (0..k) under `dist`, over the scans
 /// `0..labels.len()`. None when there are fewer than two categories.
-pub(crate) fn mean_silhouette(labels: &[i32], dist: impl Fn(usize, usize) -> f32) -> Option<f64> {
+pub fn mean_silhouette(labels: &[i32], dist: impl Fn(usize, usize) -> f32) -> Option<f64> {
     let k = labels.iter().copied().max().map_or(0, |m| m as usize + 1);
     if k < 2 {
         return None;
