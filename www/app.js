@@ -3,7 +3,7 @@
 // the view (view.js) shows the state. Load scans, describe them in a worker
 // pool, cluster, and let the user name categories.
 import init, * as wasm from './pkg/placecat.js';
-import { Engine, SPECTRAL_LIMIT } from './engine.js';
+import { Engine } from './engine.js';
 import { WorkerPool } from './pool.js';
 import { describeInputs } from './describe.js';
 import { importNames } from './imports.js';
@@ -394,8 +394,9 @@ async function spectralInWorker(k, seed, mine) {
   const set = state.set;
   const superseded = () => mine !== clusterings || state.set !== set;
   const n = state.scans.length;
-  // Refused here, before the matrix is copied out for a worker (the core refuses too).
-  if (n > SPECTRAL_LIMIT) throw new RangeError(`spectral clustering takes at most ${SPECTRAL_LIMIT} scans (it grows with the cube of their number), got ${n}; use the tree or k-means`);
+  // Refused here, before the matrix is copied out for a worker, at the core's own limit.
+  const limit = set?.spectralLimit ?? 0;
+  if (n > limit) throw new RangeError(`spectral clustering takes at most ${limit} scans (it grows with the cube of their number), got ${n}; use the tree or k-means`);
   const start = performance.now();
   const task = pool.run({
     type: 'spectral', params: /** @type {S.State['params'] & {}} */ (state.params), descriptorJsons: state.scans.map((r) => r.descriptorJson),

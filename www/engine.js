@@ -44,9 +44,6 @@ function checkRuns(restarts) {
   }
 }
 
-/** The most scans the core clusters spectrally (its `MAX_SCANS`; the engine's tests hold the two equal). */
-export const SPECTRAL_LIMIT = 2000;
-
 /** Holds at most one wasm object; freed when replaced or cleared. @template {Freeable} T */
 export class Slot {
   /** @type {T | null} */
@@ -122,14 +119,14 @@ export class Engine {
   /**
    * A new set from descriptors (the old set and tree are freed).
    * @param {Params} params @param {string[]} descriptorJsons
-   * @returns {{size: number, usesMatrix: boolean, matrixLimit: number}}
+   * @returns {{size: number, usesMatrix: boolean, matrixLimit: number, spectralLimit: number}}
    */
   load(params, descriptorJsons) {
     this.tree.clear();
     this.set.clear();
     const set = descriptorSet(this.wasm, params, descriptorJsons);
     this.set.set(set);
-    return { size: set.length, usesMatrix: set.usesMatrix, matrixLimit: set.matrixLimit };
+    return { size: set.length, usesMatrix: set.usesMatrix, matrixLimit: set.matrixLimit, spectralLimit: set.spectralLimit };
   }
 
   /**

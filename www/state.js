@@ -38,7 +38,7 @@ import { siteSubsample, OUTDOOR_PRESET } from './suggest.js';
  * @property {Params | null} params
  * @property {number} run the current run (a newer one supersedes it)
  * @property {boolean} running
- * @property {{size: number, usesMatrix: boolean, matrixLimit: number} | null} set
+ * @property {{size: number, usesMatrix: boolean, matrixLimit: number, spectralLimit: number} | null} set
  * @property {TreeData | null} tree
  * @property {CutData | null} cut
  * @property {'threshold' | 'categories' | undefined} cutBy what the user set last

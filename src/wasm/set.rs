@@ -258,6 +258,12 @@ impl DescriptorSet {
     pub fn matrix_limit(&self) -> usize {
         MATRIX_LIMIT
     }
+    /// The most scans [`spectral`](Self::spectral) takes: its
+    /// eigen-decomposition grows with the cube of their number.
+    #[wasm_bindgen(getter, js_name = spectralLimit)]
+    pub fn spectral_limit(&self) -> usize {
+        crate::cluster::spectral::MAX_SCANS
+    }
     /// The most central scan of each category: flat pairs
     /// `[label0, index0, label1, index1, ...]` (sampled above 64 members).
     pub fn medoids(&mut self, labels: &[i32]) -> WasmResult<js_sys::Int32Array> {

@@ -5,7 +5,7 @@
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
-import { Engine, Describer, Slot, scoped, SPECTRAL_LIMIT } from '../../www/engine.js';
+import { Engine, Describer, Slot, scoped } from '../../www/engine.js';
 import { importNames } from '../../www/imports.js';
 import * as S from '../../www/state.js';
 
@@ -65,7 +65,7 @@ test('a damaged file is an Error naming it', () => {
 
 test('hierarchical k-means: a plain tree, cuts into k and at a threshold, medoids inside their categories', () => {
   const e = new Engine(wasm);
-  assert.deepEqual(e.load(params, scans.map((s) => s.descriptorJson)), { size: 40, usesMatrix: true, matrixLimit: 5000 });
+  assert.deepEqual(e.load(params, scans.map((s) => s.descriptorJson)), { size: 40, usesMatrix: true, matrixLimit: 5000, spectralLimit: 2000 });
   assert.throws(() => e.cut(0.3), /no tree yet/);
   const tree = e.hkmeans(0);
   assert.ok(plain(tree));
@@ -113,7 +113,7 @@ test('spectral clustering on the raw DescriptorSet: plain labels and eigenvalues
 test('a worker clusters spectrally with the page\'s matrix: the same labels, the core\'s errors', () => {
   const e = new Engine(wasm);
   const jsons = scans.map((s) => s.descriptorJson);
-  e.load(params, jsons);
+  const { spectralLimit } = e.load(params, jsons);
   const matrix = e.deltaMatrix();
   assert.ok(matrix instanceof Float32Array && matrix.length === 40 * 40);
   const d = new Describer(wasm);
@@ -138,12 +138,12 @@ test('a worker clusters spectrally with the page\'s matrix: the same labels, the
   assert.throws(() => d.spectral(params, jsons, halves.slice(1), 5, 0), /a Delta matrix of 1599 values for 40 scans/);
   assert.throws(() => d.spectral(params, jsons, matrix, 41, 0), /^Error: invalid parameter: k = 41 is more than the 40 scans/);
   // Above the core's limit, its own refusal (before any eigen-decomposition).
-  // (One more than the page's limit, copies of the 40 scans: their matrix is the 40 scans' one, tiled.)
-  const n = SPECTRAL_LIMIT + 1;
+  // (One more than the set's spectralLimit, which the page refuses above, copies of the 40 scans: their matrix is the 40 scans' one, tiled.)
+  const n = spectralLimit + 1;
   const many = Array.from({ length: n }, (_, i) => jsons[i % 40]);
   const tiled = new Float32Array(n * n).map((_, at) => matrix[(Math.floor(at / n) % 40) * 40 + ((at % n) % 40)]);
-  // The page refuses where the core does.
-  assert.throws(() => d.spectral(params, many, tiled, 5, 0), new RegExp(`^Error: invalid parameter: spectral clustering takes at most ${SPECTRAL_LIMIT} scans .*got ${n}`));
+  // The page refuses where the core does: spectralLimit is the core's own limit.
+  assert.throws(() => d.spectral(params, many, tiled, 5, 0), new RegExp(`^Error: invalid parameter: spectral clustering takes at most ${spectralLimit} scans .*got ${n}`));
   e.dispose();
 });
 
@@ -215,7 +215,7 @@ test('a model of other parameters loads for new scans but names no category of t
   let s = S.initialState();
   s = S.beginRun(s, { datasetId: 'sim', demo: null, inputs: [], anchors: {}, params });
   s = S.finishRun(s, scans.slice(0, 10));
-  s = S.withSet(s, { size: 10, usesMatrix: true, matrixLimit: 5000 });
+  s = S.withSet(s, { size: 10, usesMatrix: true, matrixLimit: 5000, spectralLimit: 2000 });
   s = S.withLabels(s, labels, new Map([[0, 0], [1, 5]]));
   const { state, said } = importNames(s, e, 'coarse.json', coarseModel);
   assert.equal(state.modelJson, coarseModel, 'the model is loaded, for new scans');

@@ -21,7 +21,7 @@ function clustered(anchors = {}) {
   let s = S.initialState();
   s = S.beginRun(s, { datasetId: 'files-6-x', demo: null, inputs: [], anchors, params: /** @type {any} */ ({}) });
   s = S.finishRun(s, ['a', 'b', 'c', 'd', 'e', 'f'].map((n) => scan(`dir/${n}.ply`)));
-  s = S.withSet(s, { size: 6, usesMatrix: true, matrixLimit: 5000 });
+  s = S.withSet(s, { size: 6, usesMatrix: true, matrixLimit: 5000, spectralLimit: 2000 });
   return S.withLabels(s, Int32Array.from([4, 4, 4, 7, 7, -1]), new Map([[7, 4], [4, 1]]));
 }
 
@@ -208,7 +208,7 @@ test('the dendrogram takes the user\'s scale, else the tree\'s default', () => {
     { height: 0.01, children: [3, 4], members: [0, 1] }, { height: 0.03, children: [5, 6], members: [2, 3] },
     ...[0, 1, 2, 3].map((m) => ({ height: 0, children: [], members: [m] })),
   ];
-  let s = S.withSet(clustered(), { size: 4, usesMatrix: true, matrixLimit: 5000 });
+  let s = S.withSet(clustered(), { size: 4, usesMatrix: true, matrixLimit: 5000, spectralLimit: 2000 });
   s = { ...s, scans: s.scans.slice(0, 4) };
   s = S.withTree(s, { nodes, rootHeight: 16 });
   s = S.withLabels(s, Int32Array.from([0, 0, 1, 1]), new Map([[0, 0], [1, 2]]), { labels: Int32Array.from([0, 0, 1, 1]), nodes: [1, 2], threshold: 1 });
