@@ -27,7 +27,10 @@ pub struct ClusterArgs {
     /// `categories` in OUT.json).
     #[arg(long)]
     pub k: Option<Count>,
-    /// k-means seeding: random, stride, plusplus.
+    /// k-means seeding: random, stride, plusplus. Stride (the paper's
+    /// deterministic seeding) starts from scans i*n/k of the input's order,
+    /// so its result depends on that order: along a recording the route's,
+    /// for room scans the files'.
     #[arg(long, default_value = "plusplus")]
     pub seeding: String,
     /// kmeans: runs of k-means, each from its own seeding, keeping the one
