@@ -39,6 +39,7 @@ pub use terrain::SensorPose;
 
 use crate::error::{invalid, Result};
 use crate::io::poses::Pose;
+use rand::seq::SliceRandom;
 use rand::Rng;
 use serde::{Deserialize, Serialize};
 
@@ -102,6 +103,15 @@ pub struct SimParams {
     /// scene's own (1.0 to 1.3 m indoors, the vehicle's on the sites).
     #[serde(default)]
     pub sensor_height: Option<f64>,
+    /// Scenes of rooms: list the scans in a random order drawn from the
+    /// seed instead of kind by kind. The rooms, the poses and each scan's
+    /// points stay as they are; only the listing (and so the file names)
+    /// changes. An order-dependent method, such as k-means' stride
+    /// seeding (scans i·n/k), would start from one scan of each kind on a
+    /// set listed kind by kind (docs/stride-order.md). Refused along a
+    /// route, whose order is the one it was recorded in.
+    #[serde(default)]
+    pub shuffle: bool,
 }
 
 /// Default number of scans along the warehouse and outdoor routes (about
@@ -156,6 +166,7 @@ impl SimParams {
             lidar: None,
             buildings: Buildings::One,
             sensor_height: None,
+            shuffle: false,
         }
     }
 
@@ -179,9 +190,15 @@ impl SimParams {
         })
     }
 
-    /// Reject 0 or more than 100,000 scans, 0 scans per room, and an invalid
-    /// sensor.
+    /// Reject 0 or more than 100,000 scans, 0 scans per room, a shuffled
+    /// route, and an invalid sensor.
     pub fn validate(&self) -> Result<()> {
+        if self.shuffle && matches!(self.scene, SceneKind::Warehouse | SceneKind::Outdoor) {
+            return invalid(format!(
+                "shuffle: a route's scans keep the order they were recorded in ({}); it lists the scans of room scenes in a random order",
+                format!("{:?}", self.scene).to_lowercase()
+            ));
+        }
         if self.scans == 0 || self.scans > 100_000 {
             return invalid(format!("scans must be in 1..=100000, got {}", self.scans));
         }
@@ -237,8 +254,15 @@ pub struct Simulation {
     params: SimParams,
     lidar: LidarParams,
     shots: Vec<Shot>,
+    /// The shot each listed scan is: `order[i]` (the identity unless
+    /// shuffled). A scan's noise follows its shot, not its place in the list.
+    order: Vec<usize>,
     scenes: Vec<Scene>,
 }
+
+/// The RNG stream of the listing order of a shuffled set (apart from the
+/// stream that plans the scene, which shuffling leaves as it is).
+const SHUFFLE_STREAM: u64 = 0x5348_5546_464c_4500;
 
 impl Simulation {
     /// Plan the scans of `params` (checked first): build the rooms or the site
@@ -326,12 +350,22 @@ impl Simulation {
                 (scenes_out, shots) = office_floor::scans(&hospital::HOSPITAL, params, &mut r);
             }
         }
+        let mut order: Vec<usize> = (0..shots.len()).collect();
+        if params.shuffle {
+            order.shuffle(&mut crate::rng::rng_stream(params.seed, SHUFFLE_STREAM));
+        }
         Ok(Simulation {
             params: params.clone(),
             lidar: params.lidar(),
             shots,
+            order,
             scenes: scenes_out,
         })
+    }
+
+    /// The shot listed at `i`.
+    fn shot(&self, i: usize) -> &Shot {
+        &self.shots[self.order[i]]
     }
 
     /// Number of scans planned.
@@ -347,36 +381,39 @@ impl Simulation {
     /// Where scan i is taken from, without casting it (for poses, plots
     /// and tests).
     pub fn sensor_pose(&self, i: usize) -> SensorPose {
-        self.shots[i].pose
+        self.shot(i).pose
     }
 
     /// The true kind of place of scan i.
     pub fn label(&self, i: usize) -> &str {
-        &self.shots[i].label
+        &self.shot(i).label
     }
 
     /// The room scan i is in (indoor scenes: scans of one room share it,
     /// for leave-one-room-out checks); 0 for every scan along a route.
     pub fn room(&self, i: usize) -> usize {
-        self.shots[i].room
+        self.shot(i).room
     }
 
     /// The ground under scan i, where it is not a floor made of shapes.
     pub fn ground(&self, i: usize) -> Option<&terrain::Terrain> {
-        self.scenes[self.shots[i].scene].ground.as_ref()
+        self.scenes[self.shot(i).scene].ground.as_ref()
     }
 
     /// What stands around scan i (for maps of the site).
     pub fn shapes(&self, i: usize) -> &[geometry::Shape] {
-        &self.scenes[self.shots[i].scene].shapes
+        &self.scenes[self.shot(i).scene].shapes
     }
 
-    /// Cast scan i (deterministic: its own RNG stream from the seed).
+    /// Cast scan i (deterministic: its shot's own RNG stream from the
+    /// seed, so a shuffled set's scan is the same as the unshuffled one's
+    /// of its shot).
     pub fn scan(&self, i: usize) -> SimScan {
-        let shot = &self.shots[i];
+        let planned = self.order[i];
+        let shot = &self.shots[planned];
         let scene = &self.scenes[shot.scene];
         let mut r = crate::rng::rng(
-            self.params.seed ^ (0x9E37_79B9_7F4A_7C15u64.wrapping_mul(i as u64 + 1)),
+            self.params.seed ^ (0x9E37_79B9_7F4A_7C15u64.wrapping_mul(planned as u64 + 1)),
         );
         let points = lidar::scan(
             &scene.shapes,

@@ -12,7 +12,11 @@ pub struct Simulator {
 impl Simulator {
     /// `scene`: `indoor`, `warehouse` or `outdoor`; `scans`: per kind for
     /// indoor, along the path otherwise; `buildings` (indoor): `one` (the
-    /// default: rooms of a kind share a plan) or `many`.
+    /// default: rooms of a kind share a plan) or `many`; `shuffle`
+    /// (indoor): list the scans in a random order from the seed instead of
+    /// kind by kind (the same rooms, poses and points), so that an
+    /// order-dependent method such as stride seeding does not start from
+    /// one scan of each kind; routes keep their order and refuse it.
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\"")]
@@ -20,6 +24,7 @@ impl Simulator {
         seed: f64,
         scans: Option<f64>,
         buildings: Option<String>,
+        shuffle: Option<bool>,
     ) -> WasmResult<Simulator> {
         let kind: sim::SceneKind = scene.parse()?;
         let mut p = sim::SimParams::new(kind, super::set::seed_of(seed)?);
@@ -29,6 +34,7 @@ impl Simulator {
         if let Some(b) = buildings {
             p.buildings = b.parse()?;
         }
+        p.shuffle = shuffle.unwrap_or(false);
         Ok(Simulator {
             sim: sim::Simulation::new(&p)?,
         })

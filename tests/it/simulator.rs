@@ -411,3 +411,112 @@ fn the_vehicles_corridor_is_clear_of_trunks_boulders_machines_and_low_crowns() {
     }
     assert!(lapses.is_empty(), "{}", lapses.join("\n"));
 }
+
+/// `shuffle` lists a room set's scans in a random order: the same shots
+/// (label, room, pose) and the same points, each scan the one of its
+/// shot, in another order. Listed kind by kind, stride seeding's scans
+/// i·n/k are one scan of each kind (docs/stride-order.md); shuffled, they
+/// need not be. A route refuses it.
+#[test]
+fn shuffle_lists_the_same_room_scans_in_another_order() {
+    let mut p = SimParams::new(SceneKind::School, 4);
+    p.scans = 6;
+    let listed = Simulation::new(&p).unwrap();
+    p.shuffle = true;
+    let shuffled = Simulation::new(&p).unwrap();
+    let n = listed.len();
+    assert_eq!((n, shuffled.len()), (30, 30));
+    let key = |s: &Simulation, i: usize| {
+        let q = s.sensor_pose(i).position;
+        (s.label(i).to_string(), s.room(i), q.map(f64::to_bits))
+    };
+    // Each shuffled scan is a listed one (poses are distinct), each listed one used once.
+    let mut used = vec![false; n];
+    let mut moved = 0;
+    for j in 0..n {
+        let i = (0..n)
+            .find(|&i| key(&listed, i) == key(&shuffled, j))
+            .expect("a listed shot");
+        assert!(!used[i], "listed scan {i} twice");
+        used[i] = true;
+        moved += usize::from(i != j);
+        if j < 3 {
+            // Its points too (the noise follows the shot), under its listed name.
+            let (a, b) = (listed.scan(i), shuffled.scan(j));
+            assert_eq!(a.points, b.points, "scan {j} is listed scan {i}");
+            assert_eq!(b.name, format!("scan_{j:05}.ply"));
+        }
+    }
+    assert!(moved > n / 2, "only {moved} of {n} scans moved");
+    // Listed kind by kind: stride's first scans are one of each of the 5 kinds.
+    let kinds = |s: &Simulation| {
+        let mut k: Vec<String> = (0..5).map(|c| s.label(c * n / 5).to_string()).collect();
+        k.sort();
+        k.dedup();
+        k.len()
+    };
+    assert_eq!(kinds(&listed), 5);
+    let runs = |s: &Simulation| (1..n).filter(|&i| s.label(i) != s.label(i - 1)).count();
+    assert_eq!(runs(&listed), 4, "listed kind by kind");
+    assert!(runs(&shuffled) > 10, "{} changes of kind", runs(&shuffled));
+    // The same seed, the same order; routes keep theirs.
+    let again = Simulation::new(&p).unwrap();
+    assert!((0..n).all(|j| key(&again, j) == key(&shuffled, j)));
+    for scene in [SceneKind::Warehouse, SceneKind::Outdoor] {
+        let mut route = SimParams::new(scene, 1);
+        route.shuffle = true;
+        let e = Simulation::new(&route).err().expect("refused").to_string();
+        assert!(e.contains("shuffle") && e.contains("recorded"), "{e}");
+    }
+}
+
+/// `placecat simulate --shuffle` writes the shuffled listing: labels.csv
+/// names the same kinds as many times, not kind by kind.
+#[test]
+fn the_simulate_command_shuffles_room_scans_on_request() {
+    let dir = std::env::temp_dir().join(format!("placecat-sim-shuffle-{}", std::process::id()));
+    let run = |extra: &[&str], out: &std::path::Path| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_placecat"))
+            .args([
+                "simulate", "--scene", "indoor", "--seed", "2", "--scans", "4",
+            ])
+            .args(extra)
+            .arg("-o")
+            .arg(out)
+            .output()
+            .unwrap()
+    };
+    let labels = |extra: &[&str], name: &str| {
+        let out = run(extra, &dir.join(name));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = std::fs::read_to_string(dir.join(name).join("labels.csv")).unwrap();
+        text.lines()
+            .skip(1)
+            .map(|l| l.split(',').nth(1).unwrap().to_string())
+            .collect::<Vec<_>>()
+    };
+    let listed = labels(&[], "listed");
+    let shuffled = labels(&["--shuffle"], "shuffled");
+    assert_eq!(listed.len(), 20);
+    let sorted = |mut v: Vec<String>| {
+        v.sort();
+        v
+    };
+    assert_ne!(listed, shuffled);
+    assert_eq!(sorted(listed.clone()), sorted(shuffled));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_placecat"))
+        .args(["simulate", "--scene", "outdoor", "--shuffle", "-o"])
+        .arg(dir.join("route"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && err.contains("shuffle") && err.contains("outdoor"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -170,8 +170,26 @@ fn describe_real_bytes_and_cluster_through_the_api() {
 
 #[wasm_bindgen_test]
 fn simulated_demo_model_round_trip_and_classify() {
-    let sim = Simulator::new("indoor", 4.0, Some(2.0), None).unwrap();
+    let sim = Simulator::new("indoor", 4.0, Some(2.0), None, None).unwrap();
     assert_eq!(sim.length(), 10);
+    // Shuffled: the same labels in another order (listed kind by kind: a, a, b, b, ...).
+    let labels = |s: &Simulator| -> Vec<String> {
+        (0..s.length())
+            .map(|i| get(&s.scan(i).unwrap(), "label").as_string().unwrap())
+            .collect()
+    };
+    let shuffled = Simulator::new("indoor", 4.0, Some(2.0), None, Some(true)).unwrap();
+    let (mut a, mut b) = (labels(&sim), labels(&shuffled));
+    assert_ne!(a, b);
+    a.sort();
+    b.sort();
+    assert_eq!(a, b);
+    let e = message(
+        Simulator::new("outdoor", 4.0, None, None, Some(true))
+            .err()
+            .unwrap(),
+    );
+    assert!(e.contains("shuffle") && e.contains("outdoor"), "{e}");
     let mut set = DescriptorSet::new(JsValue::UNDEFINED, None).unwrap();
     let mut truth = Vec::new();
     let mut scans = Vec::new();
@@ -407,9 +425,14 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
         e.contains("this tree's: seed 4294967296, restarts 1"),
         "{e}"
     );
-    assert!(message(Simulator::new("indoor", -1.0, None, None).err().unwrap()).contains("seed"));
     assert!(message(
-        Simulator::new("indoor", 1.0, Some(2.5), None)
+        Simulator::new("indoor", -1.0, None, None, None)
+            .err()
+            .unwrap()
+    )
+    .contains("seed"));
+    assert!(message(
+        Simulator::new("indoor", 1.0, Some(2.5), None, None)
             .err()
             .unwrap()
     )
@@ -423,9 +446,9 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     )
     .contains("ground-truth"));
     assert!(message(Model::from_json("{\"format\": 1}").err().unwrap()).starts_with("model:"));
-    assert!(message(Simulator::new("moon", 0.0, None, None).err().unwrap()).contains("moon"));
+    assert!(message(Simulator::new("moon", 0.0, None, None, None).err().unwrap()).contains("moon"));
     let e = message(
-        Simulator::new("indoor", 0.0, None, Some("few".into()))
+        Simulator::new("indoor", 0.0, None, Some("few".into()), None)
             .err()
             .unwrap(),
     );

@@ -466,6 +466,7 @@ pub fn simulate(
     seed: u64,
     scans: Option<usize>,
     buildings: &str,
+    shuffle: bool,
     sensor: &SensorArgs,
     dir: &Path,
 ) -> Result<ExitCode> {
@@ -477,6 +478,7 @@ pub fn simulate(
     let kind: SceneKind = scene.parse()?;
     let mut p = SimParams::new(kind, seed);
     p.buildings = buildings.parse()?;
+    p.shuffle = shuffle;
     if let Some(n) = scans {
         p.scans = n;
     }

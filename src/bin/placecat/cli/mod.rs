@@ -149,6 +149,13 @@ enum Command {
         /// L-shaped rooms).
         #[arg(long, default_value = "one")]
         buildings: String,
+        /// Scenes of rooms: list the scans in a random order (from the
+        /// seed) instead of kind by kind; the same rooms, poses and points.
+        /// Order-dependent methods, such as stride seeding, then do not
+        /// start from one scan of each kind. Refused for warehouse and
+        /// outdoor, whose routes keep their order.
+        #[arg(long)]
+        shuffle: bool,
         #[command(flatten)]
         sensor: cluster::SensorArgs,
         /// The folder to write the scans, poses.txt, poses_tum.txt and
@@ -305,9 +312,10 @@ pub fn main() -> ExitCode {
             seed,
             scans,
             buildings,
+            shuffle,
             sensor,
             output,
-        } => cluster::simulate(&scene, seed, scans, &buildings, &sensor, &output),
+        } => cluster::simulate(&scene, seed, scans, &buildings, shuffle, &sensor, &output),
         Command::Distances {
             descriptors,
             output,
