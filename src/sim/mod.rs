@@ -195,7 +195,7 @@ impl SimParams {
     pub fn validate(&self) -> Result<()> {
         if self.shuffle && matches!(self.scene, SceneKind::Warehouse | SceneKind::Outdoor) {
             return invalid(format!(
-                "shuffle: a route's scans keep the order they were recorded in ({}); it lists the scans of room scenes in a random order",
+                "shuffle: a route's scans keep the order they were recorded in ({}); shuffle is for room scenes, whose scans it lists in a random order",
                 format!("{:?}", self.scene).to_lowercase()
             ));
         }

@@ -443,7 +443,10 @@ fn shuffle_lists_the_same_room_scans_in_another_order() {
         if j < 3 {
             // Its points too (the noise follows the shot), under its listed name.
             let (a, b) = (listed.scan(i), shuffled.scan(j));
-            assert_eq!(a.points, b.points, "scan {j} is listed scan {i}");
+            assert!(
+                a.points == b.points,
+                "scan {j} is not listed scan {i}'s points"
+            );
             assert_eq!(b.name, format!("scan_{j:05}.ply"));
         }
     }
@@ -502,6 +505,19 @@ fn the_simulate_command_shuffles_room_scans_on_request() {
     let listed = labels(&[], "listed");
     let shuffled = labels(&["--shuffle"], "shuffled");
     assert_eq!(listed.len(), 20);
+    // Each shuffled file is a listed file of the same label, under its own name.
+    let ply = |name: &str, i: usize| {
+        std::fs::read(dir.join(name).join(format!("scan_{i:05}.ply"))).unwrap()
+    };
+    let listed_files: Vec<Vec<u8>> = (0..20).map(|i| ply("listed", i)).collect();
+    for (j, label) in shuffled.iter().enumerate() {
+        let bytes = ply("shuffled", j);
+        let i = listed_files
+            .iter()
+            .position(|f| *f == bytes)
+            .expect("a listed scan");
+        assert_eq!(&listed[i], label, "shuffled scan {j} is listed scan {i}");
+    }
     let sorted = |mut v: Vec<String>| {
         v.sort();
         v
