@@ -27,11 +27,14 @@ const SEEDS: &[u64] = &[481, 482, 483, 484, 485, 491, 492, 493, 494, 495];
 
 /// Mean Delta between scans of `a` and of `b` (no scan with itself).
 fn mean_delta(m: &DistanceMatrix, a: &[usize], b: &[usize]) -> f64 {
-    let pairs: Vec<f64> = (a.iter())
-        .flat_map(|&i| b.iter().filter(move |&&j| j != i).map(move |&j| (i, j)))
-        .map(|(i, j)| f64::from(m.get(i, j)))
-        .collect();
-    pairs.iter().sum::<f64>() / pairs.len().max(1) as f64
+    let (mut sum, mut pairs) = (0.0, 0usize);
+    for &i in a {
+        for &j in b.iter().filter(|&&j| j != i) {
+            sum += f64::from(m.get(i, j));
+            pairs += 1;
+        }
+    }
+    sum / pairs.max(1) as f64
 }
 
 /// The scans whose true kind is `kind`.

@@ -109,30 +109,30 @@ struct ExperimentSeed {
 /// Stride k-means on one held-out set as listed (checked against
 /// docs/experiments.json) and in random orders.
 fn held_out(seed: u64, reported: &[ExperimentSeed]) -> Res<HeldOut> {
-    use placecat::sim::{SceneKind, SimParams, Simulation};
-    use rayon::prelude::*;
-    let params = DescriptorParams::indoor();
-    let sim = Simulation::new(&SimParams::new(SceneKind::Indoor, seed))?;
-    let described: Vec<(Descriptor, String)> = (0..sim.len())
-        .into_par_iter()
-        .map(|i| {
-            let s = sim.scan(i);
-            describe(&s.points, &params).map(|d| (d, s.label))
-        })
-        .collect::<Result<_, _>>()?;
-    let (ds, truth): (Vec<Descriptor>, Vec<String>) = described.into_iter().unzip();
+    // `placecat simulate --scene indoor`'s defaults (SimParams::new) as a
+    // family, so that the rounds' describe_set describes it.
+    let family = Family {
+        name: "indoor (held out)",
+        scene: placecat::sim::SceneKind::Indoor,
+        buildings: placecat::sim::Buildings::One,
+        scans: 40,
+        scans_per_room: 5,
+        paper: "indoor",
+        sensors: &[],
+    };
+    let set = describe_set(&family, Sensor::Own, seed, &["indoor".to_string()])?;
+    let (_, params, ds) = set
+        .presets
+        .first()
+        .ok_or("the indoor preset described nothing")?;
     let listed: Vec<usize> = (0..ds.len()).collect();
-    let as_listed = stride_in(&listed, &ds, &truth, &params, 5)?;
+    let as_listed = stride_in(&listed, ds, &set.truth, params, set.kinds)?;
     let rep = (reported.iter().find(|r| r.seed == seed))
         .ok_or_else(|| format!("docs/experiments.json: no seed {seed}"))?;
-    if (as_listed - rep.stride).abs() > 1e-9 {
-        return Err(format!(
-            "held-out seed {seed}: stride k-means {as_listed}, docs/experiments.json says {}",
-            rep.stride
-        )
-        .into());
-    }
-    let shuffled = shuffled_strides(seed, &listed, &ds, &truth, &params, 5)?;
+    same_as_reported(as_listed, rep.stride, || {
+        format!("held-out seed {seed}: docs/experiments.json")
+    })?;
+    let shuffled = shuffled_strides(seed, ds, &set.truth, params, set.kinds)?;
     Ok(HeldOut {
         seed,
         stride_listed: as_listed,
@@ -141,10 +141,17 @@ fn held_out(seed: u64, reported: &[ExperimentSeed]) -> Res<HeldOut> {
     })
 }
 
+/// A recomputed figure must be the reported one (same code, same scans).
+fn same_as_reported(got: f64, reported: f64, what: impl Fn() -> String) -> Res<()> {
+    if (got - reported).abs() > 1e-9 {
+        return Err(format!("{}: stride k-means {got}, reported {reported}", what()).into());
+    }
+    Ok(())
+}
+
 /// Stride k-means on the scans in order seeds 0-9's random orders.
 fn shuffled_strides(
     seed: u64,
-    listed: &[usize],
     ds: &[Descriptor],
     truth: &[String],
     params: &DescriptorParams,
@@ -152,7 +159,7 @@ fn shuffled_strides(
 ) -> Res<Vec<f64>> {
     (0..ORDERS)
         .map(|o| {
-            let mut order = listed.to_vec();
+            let mut order: Vec<usize> = (0..ds.len()).collect();
             order.shuffle(&mut ChaCha8Rng::seed_from_u64(seed * 1000 + o));
             stride_in(&order, ds, truth, params, k)
         })
@@ -201,9 +208,9 @@ fn main() -> Res<()> {
                 ..Row::default()
             })
             .collect();
+        let presets: Vec<String> = PRESETS.iter().map(|p| p.to_string()).collect();
         for (sample, file) in reported.iter().zip(SAMPLES) {
             for (s, &seed) in sample.seeds.iter().enumerate() {
-                let presets: Vec<String> = PRESETS.iter().map(|p| p.to_string()).collect();
                 let set = describe_set(&f, sensor, seed, &presets)?;
                 let (truth, k) = (&set.truth, set.kinds);
                 let listed: Vec<usize> = (0..set.scans).collect();
@@ -220,16 +227,15 @@ fn main() -> Res<()> {
                         })?;
                     let as_listed = stride_in(&listed, ds, truth, params, k)?;
                     // The reported figure, recomputed: the same code and scans.
-                    if (as_listed - rep.stride[s]).abs() > 1e-9 {
-                        return Err(format!(
-                            "{} {} {name} seed {seed}: stride k-means {as_listed}, docs/{} says {}",
-                            row.family, row.sensor, file.0, rep.stride[s]
+                    same_as_reported(as_listed, rep.stride[s], || {
+                        format!(
+                            "{} {} {name} seed {seed}: docs/{}",
+                            row.family, row.sensor, file.0
                         )
-                        .into());
-                    }
-                    let shuffled = shuffled_strides(seed, &listed, ds, truth, params, k)?;
-                    let firsts: Vec<&String> = (0..k).map(|i| &truth[i * set.scans / k]).collect();
-                    let mut kinds = firsts.clone();
+                    })?;
+                    let shuffled = shuffled_strides(seed, ds, truth, params, k)?;
+                    let mut kinds: Vec<&String> =
+                        (0..k).map(|i| &truth[i * set.scans / k]).collect();
                     kinds.sort();
                     kinds.dedup();
                     row.stride_listed.push(as_listed);

@@ -394,9 +394,9 @@ async function spectralInWorker(k, seed, mine) {
   const set = state.set;
   const superseded = () => mine !== clusterings || state.set !== set;
   const n = state.scans.length;
-  // Refused here, before the matrix is copied out for a worker, at the core's own limit.
-  const limit = set?.spectralLimit ?? 0;
-  if (n > limit) throw new RangeError(`spectral clustering takes at most ${limit} scans (it grows with the cube of their number), got ${n}; use the tree or k-means`);
+  // Refused here, before the matrix is copied out for a worker, at the core's own limit
+  // (without a set, the engine refuses, as for the other methods).
+  if (set && n > set.spectralLimit) throw new RangeError(`spectral clustering takes at most ${set.spectralLimit} scans (it grows with the cube of their number), got ${n}; use the tree or k-means`);
   const start = performance.now();
   const task = pool.run({
     type: 'spectral', params: /** @type {S.State['params'] & {}} */ (state.params), descriptorJsons: state.scans.map((r) => r.descriptorJson),
