@@ -119,6 +119,7 @@ fn held_out(seed: u64, reported: &[ExperimentSeed]) -> Res<HeldOut> {
         scans_per_room: 5,
         paper: "indoor",
         sensors: &[],
+        shuffle: false,
     };
     let set = describe_set(&family, Sensor::Own, seed, &["indoor".to_string()])?;
     let (_, params, ds) = set

@@ -24,6 +24,10 @@ pub struct Family {
     pub paper: &'static str,
     /// The other sensors it is run with, besides its own.
     pub sensors: &'static [Sensor],
+    /// Room scenes: list the scans in a random order (`SimParams.shuffle`;
+    /// from the twentieth round, docs/stride-order.md). The families here
+    /// list them kind by kind, as every earlier round ran them.
+    pub shuffle: bool,
 }
 
 /// A sensor variant: a beam count or a height, else the scene's own.
@@ -71,6 +75,7 @@ pub fn families() -> Vec<Family> {
         scans_per_room: ROOM_SCANS,
         paper: "indoor",
         sensors: SPARSE_SENSOR,
+        shuffle: false,
     };
     vec![
         Family {
@@ -100,6 +105,7 @@ pub fn families() -> Vec<Family> {
             scans_per_room: 1,
             paper: "indoor",
             sensors: WAREHOUSE_SENSORS,
+            shuffle: false,
         },
         Family {
             name: "outdoor",
@@ -109,6 +115,7 @@ pub fn families() -> Vec<Family> {
             scans_per_room: 1,
             paper: "outdoor",
             sensors: SPARSE_SENSOR,
+            shuffle: false,
         },
     ]
 }
@@ -127,6 +134,7 @@ pub fn hospital_family() -> Family {
         scans_per_room: ROOM_SCANS,
         paper: "indoor",
         sensors: SPARSE_SENSOR,
+        shuffle: false,
     }
 }
 
@@ -150,6 +158,7 @@ pub fn sim_params(f: &Family, sensor: Sensor, seed: u64) -> placecat::Result<Sim
     p.buildings = f.buildings;
     p.scans = f.scans;
     p.scans_per_room = f.scans_per_room;
+    p.shuffle = f.shuffle;
     match sensor {
         Sensor::Own => {}
         Sensor::Beams(b) => p.lidar = Some(LidarParams::with_beams(b)?),
