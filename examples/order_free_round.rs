@@ -275,7 +275,47 @@ fn readings(o: &mut String, r: &Report) -> Res<()> {
     }
     let s = &r.stride_starts;
     writeln!(o, "- Stride seeding's first centres were one scan of each kind on {} of the {} room sets as simulated (every one of them when listed kind by kind).", s.one_of_each_kind, s.room_sets)?;
+    let rooms: Vec<&Row> = (r.rows.iter())
+        .filter(|x| x.rooms && x.preset == "indoor_objects")
+        .collect();
+    let starts = starts_by_seed(&r.seeds)?;
+    if starts.iter().sum::<usize>() != s.one_of_each_kind {
+        return Err("the simulator's plan no longer gives the run's stride starts".into());
+    }
+    writeln!(o, "- By seed, `indoor_objects` over the {} room rows (room rows whose stride seeds were one scan of each kind; means of stride k-means, best of 10, spectral):", rooms.len())?;
+    for (i, (seed, one_of_each)) in r.seeds.iter().zip(starts).enumerate() {
+        let avg = |f: fn(&Row) -> &Vec<f64>| {
+            pct(rooms.iter().map(|x| f(x)[i]).sum::<f64>() / rooms.len() as f64)
+        };
+        writeln!(
+            o,
+            "  - seed {seed} ({one_of_each} of {}): {}, {}, {} %",
+            rooms.len(),
+            avg(|x| &x.stride),
+            avg(|x| &x.best_of_10),
+            avg(|x| &x.spectral)
+        )?;
+    }
     Ok(())
+}
+
+/// For each seed, the room rows (family and sensor) whose shuffled set
+/// starts stride seeding from one scan of each kind. Recomputed from the
+/// simulator's plan (no scan is cast): the report keeps only the total.
+fn starts_by_seed(seeds: &[u64]) -> Res<Vec<usize>> {
+    let mut counts = vec![0; seeds.len()];
+    for (f, sensor) in room_rows() {
+        let f = Family { shuffle: true, ..f };
+        for (count, &seed) in counts.iter_mut().zip(seeds) {
+            let sim = placecat::sim::Simulation::new(&sim_params(&f, sensor, seed)?)?;
+            let truth: Vec<String> = (0..sim.len()).map(|i| sim.label(i).to_string()).collect();
+            let mut kinds = truth.clone();
+            kinds.sort();
+            kinds.dedup();
+            *count += stride_starts_one_of_each(&truth, kinds.len()) as usize;
+        }
+    }
+    Ok(counts)
 }
 
 /// The eighteenth round's development run (docs/spectral-dev.json): the
@@ -338,7 +378,16 @@ fn same_as_listed(dev: &Report) -> Res<usize> {
 }
 
 /// What the round showed, written after its one test run.
-const NOTES: &str = "(Written after the test run.)";
+const NOTES: &str = "Written after the one test run (seeds 511-515, 2026-12-05 23:00, commit c6462d4's code; the plan was fixed beforehand in docs/seeds.md, commit a2e754c at 22:48). Nothing changed in placecat; every figure below is the table's.
+
+- **Issue 18's indoor target as the rounds read it (stride k-means and k-means++ best of 10 each at least 85 %) is met in no room row with the new presets** once the scans are in a random order: 0 of 14 with `indoor_objects` and with `indoor_searched`, 2 with the paper's `indoor` (one building and many buildings, own sensor, stride 85.3 and 85.8 %). Stride k-means is below best of 10 in every room row with `indoor_objects`, by 6.8 to 24.0 points; over the 14 rows it averages 75.1 % (72.5 % without seed 512, below).
+- **One test seed in five started stride seeding from one scan of each kind, on every room row.** The simulator draws a shuffled order from the seed and the number of scans alone, so every family and sensor of a seed gets the same permutation of its 45 scans, and all families list their kinds in blocks of 9 before it. On 512 the positions i·n/k fell on five different kinds; there stride k-means averages 85.2 % with `indoor_objects`, on the other four seeds 68.1 to 77.1 %. (Development seed 4 did the same: 90.8 % against 70.2 to 75.1 %.) The chance of that for one uniformly random order is about 5 %. Within a seed the room rows' orders are therefore not independent; a later round should draw the order per family (noticed after the run; the simulator was not changed, so this report reproduces).
+- **The figures that do not start from the order agree with the earlier rounds' samples.** With `indoor_objects` over the 14 room rows: k-means++ best of 10 86.8 % (pooled 481-495: 86.2 %), spectral clustering 91.1 % (91.2 %), room-level 1-NN 90.8 %. Best of 10 reaches 85 % in 8 of 14 rows (as pooled over 481-495): the one building, the many buildings with both sensors, the varied plans, the school with its own sensor, at 0.3 m and at 1.8 m, and the hospital with its own sensor (89.8 %; on the four earlier samples of `indoor_objects`, 461-465 to 491-495, that row's best of 10 was 75.5 to 83.6 %). It misses on the office floor (81.1 %; at 0.3 m 83.0 %), the school with 16, 32 and 64 beams (82.2, 82.4, 84.5 %) and the hospital with 16 beams (71.5 %).
+- **Spectral clustering reaches 85 % in 11 of 14 room rows** with `indoor_objects` (and with `indoor_searched`), above best of 10 in all 14 (by 0.3 to 7.7 points). It misses on the office floor with both sensors (83.9 and 83.3 %) and the hospital with 16 beams (74.0 %).
+- **hk-means++ (the tree, cut at the true k) is below best of 10 in every room row** with `indoor_objects`, by 1.1 to 17.1 points (79.1 % over the rows); it reaches 85 % in 2 rows with either room preset, none with `indoor`.
+- **The warehouse halls:** the tree of `indoor_plus` reaches 97.6 % with the own sensor (target met) and 91.6 % with 32 beams (missed: four sets at 98-100 %, seed 512 at 62.0 %). The paper's `indoor` stays at 58.8-66.8 %.
+- **Outdoor:** `outdoor_near` is not worse than the paper's `outdoor` with either sensor (stride 97.6 against 95.4 % and 96.0 against 87.8 %; the tree 97.8 against 96.5 % and 94.6 against 85.2 %).
+- **Against the paper's preset** `indoor_objects` is higher with best of 10 in 12 of 14 room rows (lower on the one building, 94.3 against 94.5 %, and the many buildings with the own sensor, 93.1 against 93.6 %) and with room-level 1-NN in all 14, but with stride k-means in a random order `indoor_objects` is below `indoor` in 4 rows (the one building 77.3 against 85.3 %, the many buildings 80.9 against 85.8 %, with 16 beams 78.7 against 79.1 %, the varied plans 80.9 against 82.7 %).";
 
 fn render(dev: &Report, test: &Report) -> Res<String> {
     let mut o = String::new();
