@@ -10,16 +10,21 @@ pub struct Simulator {
 
 #[wasm_bindgen]
 impl Simulator {
-    /// `scene`: `indoor`, `warehouse` or `outdoor`; `scans`: per kind for
-    /// indoor, along the path otherwise; `buildings` (indoor): `one` (the
-    /// default: rooms of a kind share a plan) or `many`; `shuffle`
-    /// (indoor): list the scans in a random order from the seed instead of
-    /// kind by kind (the same rooms, poses and points), so that an
-    /// order-dependent method such as stride seeding does not start from
-    /// one scan of each kind; routes keep their order and refuse it.
+    /// `scene`: `indoor`, `warehouse` or `outdoor` (the paper's scenes), or
+    /// the floors `office-floor`, `school` or `hospital` (rooms along
+    /// corridors, as `placecat simulate --scene`); `scans`: per kind for
+    /// the room scenes, along the path otherwise; `buildings` (indoor):
+    /// `one` (the default: rooms of a kind share a plan), `many` or
+    /// `varied`; `shuffle` (room scenes): list the scans in a random order
+    /// from the seed instead of kind by kind (the same rooms, poses and
+    /// points), so that an order-dependent method such as stride seeding
+    /// does not start from one scan of each kind; routes keep their order
+    /// and refuse it.
     #[wasm_bindgen(constructor)]
     pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\"")]
+        #[wasm_bindgen(
+            unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\" | \"office-floor\" | \"school\" | \"hospital\""
+        )]
         scene: &str,
         seed: f64,
         scans: Option<f64>,
@@ -43,6 +48,23 @@ impl Simulator {
     /// Number of scans the simulation will make.
     pub fn length(&self) -> usize {
         self.sim.len()
+    }
+    /// Every scan's true label, in the order the scans are listed: the
+    /// ground truth for `DescriptorSet.evaluate`, known without making a
+    /// scan.
+    #[wasm_bindgen(getter)]
+    pub fn labels(&self) -> Vec<String> {
+        (0..self.sim.len())
+            .map(|i| self.sim.label(i).to_string())
+            .collect()
+    }
+    /// The room each scan was made in (room scenes: scans of a room share
+    /// the number, for leave-one-room-out checks; 0 along a route).
+    #[wasm_bindgen(getter)]
+    pub fn rooms(&self) -> Vec<u32> {
+        (0..self.sim.len())
+            .map(|i| self.sim.room(i) as u32)
+            .collect()
     }
     /// Scan i as binary PLY bytes plus `{name, label, pose}`:
     /// returns `{name, label, pose, bytes}`.

@@ -172,18 +172,35 @@ fn describe_real_bytes_and_cluster_through_the_api() {
 fn simulated_demo_model_round_trip_and_classify() {
     let sim = Simulator::new("indoor", 4.0, Some(2.0), None, None).unwrap();
     assert_eq!(sim.length(), 10);
-    // Shuffled: the same labels in another order (listed kind by kind: a, a, b, b, ...).
-    let labels = |s: &Simulator| -> Vec<String> {
-        (0..s.length())
-            .map(|i| get(&s.scan(i).unwrap(), "label").as_string().unwrap())
-            .collect()
-    };
+    // The labels getter is each scan's label, known without casting it.
+    let listed = sim.labels();
+    assert_eq!(listed.len(), 10);
+    for i in [0, 3, 9] {
+        let label = get(&sim.scan(i).unwrap(), "label").as_string().unwrap();
+        assert_eq!(label, listed[i]);
+    }
+    // Listed kind by kind (a, a, b, b, ...), rooms of the default 3 scans
+    // numbered in order.
+    assert!(
+        listed.chunks(2).all(|kind| kind[0] == kind[1]),
+        "{listed:?}"
+    );
+    assert_eq!(sim.rooms().len(), 10);
+    // Shuffled: the same labels in another order, and each scan keeps its
+    // room with its label.
     let shuffled = Simulator::new("indoor", 4.0, Some(2.0), None, Some(true)).unwrap();
-    let (mut a, mut b) = (labels(&sim), labels(&shuffled));
-    assert_ne!(a, b);
-    a.sort();
-    b.sort();
-    assert_eq!(a, b);
+    let pairs = |s: &Simulator| -> Vec<(String, u32)> {
+        let mut v: Vec<_> = s.labels().into_iter().zip(s.rooms()).collect();
+        v.sort();
+        v
+    };
+    assert_ne!(shuffled.labels(), listed);
+    assert_eq!(pairs(&shuffled), pairs(&sim));
+    // The floors are scenes of the wasm API too (one kind in a room).
+    let school = Simulator::new("school", 4.0, Some(2.0), None, None).unwrap();
+    let kinds: std::collections::BTreeSet<String> = school.labels().into_iter().collect();
+    assert_eq!(kinds.len(), 5, "{kinds:?}");
+    assert!(school.rooms().windows(2).all(|w| w[0] <= w[1]));
     let e = message(
         Simulator::new("outdoor", 4.0, None, None, Some(true))
             .err()
