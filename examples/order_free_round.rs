@@ -11,7 +11,18 @@
 //! The plan was fixed in docs/seeds.md ("issue 18, twentieth round") before
 //! any run: no method, part, weight or preset changes, nothing is decided,
 //! every row is reported. The test run refuses to overwrite its report.
+//!
+//! The twenty-first round (`--seeding`) runs the same with k-means of
+//! spectral seeding (`Seeding::Spectral`) beside the other methods, on its
+//! own fresh test seeds, and computes the rule fixed for it in docs/seeds.md:
+//!
+//!     ... -- --seeding --dev   # seeds 1-6: docs/spectral-seeding-round-dev.json
+//!     ... -- --seeding         # test seeds 521-525, once: docs/spectral-seeding-round.{json,md}
+//!     ... -- --seeding --render
 
+use placecat::cluster::{Centre, KMeans, KMeansParams, Seeding, Spectral, SpectralParams};
+use placecat::distance::Space;
+use placecat::DistanceOptions;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -34,6 +45,12 @@ use rounds::*;
 /// Fixed in docs/seeds.md ("issue 18, twentieth round") before any run.
 const DEV_SEEDS: &[u64] = &[1, 2, 3, 4, 5, 6];
 const TEST_SEEDS: &[u64] = &[511, 512, 513, 514, 515];
+/// The twenty-first round's, fixed in docs/seeds.md before any run.
+const SEEDING_TEST_SEEDS: &[u64] = &[521, 522, 523, 524, 525];
+/// The twenty-first round's rule: the preset, and the most room rows in
+/// which spectral seeding may be below best of 10.
+const RULE_PRESET: &str = "indoor_objects";
+const MOST_ROWS_LOWER: usize = 4;
 const ROOM_PRESETS: &[&str] = &["indoor", "indoor_searched", "indoor_objects"];
 const WAREHOUSE_PRESETS: &[&str] = &["indoor", "indoor_plus"];
 const OUTDOOR_PRESETS: &[&str] = &["outdoor", "outdoor_near"];
@@ -56,6 +73,10 @@ struct Row {
     tree: Vec<f64>,
     spectral: Vec<f64>,
     nearest: Vec<f64>,
+    /// k-means with spectral seeding (the twenty-first round; empty in
+    /// the twentieth's).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    seeded: Vec<f64>,
 }
 
 /// How often, on the room sets as simulated, stride seeding's first
@@ -108,11 +129,15 @@ impl Row {
     }
 
     fn cells(&self) -> Vec<String> {
+        let mut figures: Vec<String> = self.means().map(pct).to_vec();
+        if !self.seeded.is_empty() {
+            figures.insert(2, pct(mean(&self.seeded)));
+        }
         ([&self.family, &self.sensor]
             .map(|s| s.to_string())
             .into_iter())
         .chain([format!("`{}`", self.preset)])
-        .chain(self.means().map(pct))
+        .chain(figures)
         .chain([self.target().to_string()])
         .collect()
     }
@@ -151,7 +176,41 @@ fn check_shuffled(f: &Family, truth: &[String], kinds: usize) -> Res<()> {
     Ok(())
 }
 
-fn run(seeds: &[u64]) -> Res<Report> {
+/// k-means with spectral seeding for clustering seeds 0-9 (mean), each run
+/// checked against k-means from the means of spectral clustering's groups
+/// computed here (the development look's way, docs/spectral-seeding-dev.md).
+fn spectral_seeding(space: &Space, truth: &[String], k: usize) -> Res<f64> {
+    let matrix = space.matrix();
+    let mut sum = 0.0;
+    for s in 0..CLUSTER_SEEDS {
+        let fit = KMeans::fit(
+            space,
+            &KMeansParams::new(k).seeding(Seeding::Spectral).seed(s),
+        )?;
+        let groups = Spectral::fit(&matrix, &SpectralParams::new(k).seed(s))?;
+        let centres = (0..k as i32)
+            .map(|g| {
+                let members: Vec<usize> = (0..truth.len())
+                    .filter(|&i| groups.labels[i] == g)
+                    .collect();
+                let first = *members.first().ok_or("an empty group")?;
+                space
+                    .mean(&members, &space.centre_of(first))
+                    .ok_or("an empty group")
+            })
+            .collect::<Result<Vec<Centre>, _>>()?;
+        let look = KMeans::fit_from_centres(space, centres, 100)?;
+        if look.labels != fit.labels {
+            return Err(
+                "spectral seeding differs from k-means from the spectral groups' means".into(),
+            );
+        }
+        sum += placecat::eval::evaluate(truth, &fit.labels)?.accuracy;
+    }
+    Ok(sum / CLUSTER_SEEDS as f64)
+}
+
+fn run(seeds: &[u64], seeded: bool) -> Res<Report> {
     let t0 = std::time::Instant::now();
     let mut rows = vec![];
     let mut starts = StrideStarts::default();
@@ -177,6 +236,7 @@ fn run(seeds: &[u64]) -> Res<Report> {
                     tree: vec![],
                     spectral: vec![],
                     nearest: vec![],
+                    seeded: vec![],
                 })
                 .collect();
             for &seed in seeds {
@@ -200,6 +260,10 @@ fn run(seeds: &[u64]) -> Res<Report> {
                     row.spectral.push(spectral.accuracy);
                     row.nearest
                         .push(room_level_nn(&matrix, &set.truth, &set.apart));
+                    if seeded {
+                        let space = Space::new(descriptors, DistanceOptions::from(params))?;
+                        row.seeded.push(spectral_seeding(&space, &set.truth, k)?);
+                    }
                 }
             }
             for r in &out {
@@ -426,13 +490,16 @@ fn render(dev: &Report, test: &Report) -> Res<String> {
 
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--seeding") {
+        return seeding_round(&args);
+    }
     let (dev_json, test_json) = (
         docs().join("order-free-dev.json"),
         docs().join("order-free.json"),
     );
     if args.iter().any(|a| a == "--dev") {
         seeds::check_round_seeds(DEV_SEEDS, &[])?;
-        let r = run(DEV_SEEDS)?;
+        let r = run(DEV_SEEDS, false)?;
         eprintln!("{} figures the same as the listed run", same_as_listed(&r)?);
         return write("order-free-dev.json", &serde_json::to_string_pretty(&r)?);
     }
@@ -449,10 +516,138 @@ fn main() -> Res<()> {
         }
         write(
             "order-free.json",
-            &serde_json::to_string_pretty(&run(TEST_SEEDS)?)?,
+            &serde_json::to_string_pretty(&run(TEST_SEEDS, false)?)?,
         )?;
     }
     let dev: Report = read_json(&dev_json)?;
     let test: Report = read_json(&test_json)?;
     write("order-free.md", &render(&dev, &test)?)
+}
+
+/// The twenty-first round: k-means with spectral seeding beside the
+/// twentieth round's methods, development seeds then its test seeds once.
+fn seeding_round(args: &[String]) -> Res<()> {
+    let (dev_json, test_json) = (
+        docs().join("spectral-seeding-round-dev.json"),
+        docs().join("spectral-seeding-round.json"),
+    );
+    if args.iter().any(|a| a == "--dev") {
+        seeds::check_round_seeds(DEV_SEEDS, &[])?;
+        let r = run(DEV_SEEDS, true)?;
+        return write(
+            "spectral-seeding-round-dev.json",
+            &serde_json::to_string_pretty(&r)?,
+        );
+    }
+    if !args.iter().any(|a| a == "--render") {
+        if !dev_json.exists() {
+            return Err("run the development seeds first (--seeding --dev)".into());
+        }
+        seeds::check_round_seeds(DEV_SEEDS, SEEDING_TEST_SEEDS)?;
+        if test_json.exists() {
+            return Err("docs/spectral-seeding-round.json exists: the test seeds were run once already (use --seeding --render)".into());
+        }
+        let r = run(SEEDING_TEST_SEEDS, true)?;
+        write(
+            "spectral-seeding-round.json",
+            &serde_json::to_string_pretty(&r)?,
+        )?;
+    }
+    let dev: Report = read_json(&dev_json)?;
+    let test: Report = read_json(&test_json)?;
+    write("spectral-seeding-round.md", &render_seeding(&dev, &test)?)
+}
+
+/// The rule of the twenty-first round on a report's room rows of
+/// [`RULE_PRESET`], and the readings its plan names.
+fn seeding_readings(o: &mut String, r: &Report) -> Res<()> {
+    let rows: Vec<&Row> = (r.rows.iter())
+        .filter(|x| x.rooms && x.preset == RULE_PRESET)
+        .collect();
+    let n = rows.len() as f64;
+    let avg = |f: fn(&Row) -> &Vec<f64>| rows.iter().map(|x| mean(f(x))).sum::<f64>() / n;
+    let (seeded, best) = (avg(|x| &x.seeded), avg(|x| &x.best_of_10));
+    let lower = (rows.iter())
+        .filter(|x| mean(&x.seeded) < mean(&x.best_of_10))
+        .count();
+    let recommends = seeded > best && lower <= MOST_ROWS_LOWER;
+    writeln!(o, "**The rule, computed** (`{RULE_PRESET}`, {} room rows): k-means with spectral seeding averages {} % against k-means++ best of 10's {} %, and is lower in {lower} rows: {}.\n", rows.len(), pct(seeded), pct(best), if recommends { "the docs recommend it for sets of room scans" } else { "it stays an option the docs do not recommend" })?;
+    fn at(x: f64) -> bool {
+        100.0 * x >= ROOM_TARGET
+    }
+    for preset in ROOM_PRESETS {
+        let rows: Vec<&Row> = (r.rows.iter())
+            .filter(|x| x.rooms && x.preset == *preset)
+            .collect();
+        let count = |f: fn(&Row) -> bool| rows.iter().filter(|x| f(x)).count();
+        let seeded = count(|x| at(mean(&x.seeded)));
+        let missed: Vec<String> = (rows.iter())
+            .filter(|x| !at(mean(&x.seeded)))
+            .map(|x| format!("{}, {} ({} %)", x.family, x.sensor, pct(mean(&x.seeded))))
+            .collect();
+        let both = count(|x| at(mean(&x.stride)) && at(mean(&x.best_of_10)));
+        let best = count(|x| at(mean(&x.best_of_10)));
+        let spectral = count(|x| at(mean(&x.spectral)));
+        let missed = if missed.is_empty() {
+            String::new()
+        } else {
+            format!(" (missed: {})", missed.join("; "))
+        };
+        writeln!(o, "- `{preset}`, {} room rows at least 85 %: k-means with spectral seeding in **{seeded}**{missed}; stride k-means and best of 10 both in {both}; best of 10 in {best}; spectral clustering in {spectral}.", rows.len())?;
+    }
+    for x in r.rows.iter().filter(|x| x.family == "warehouse") {
+        let tree = 100.0 * mean(&x.tree);
+        let verdict = if tree >= HALL_TARGET { "met" } else { "missed" };
+        writeln!(o, "- The warehouse, {}, `{}`: the tree {tree:.1} % (target 95 %: {verdict}); spectral seeding {} %.", x.sensor, x.preset, pct(mean(&x.seeded)))?;
+    }
+    let outdoor: Vec<&Row> = r.rows.iter().filter(|x| x.family == "outdoor").collect();
+    for near in outdoor.iter().filter(|x| x.preset == "outdoor_near") {
+        let paper = (outdoor.iter())
+            .find(|x| x.sensor == near.sensor && x.preset == "outdoor")
+            .ok_or("no `outdoor` row beside `outdoor_near`")?;
+        writeln!(o, "- Outdoor, {}: `outdoor_near` against `outdoor`, stride k-means {} against {} %, the tree {} against {} %; spectral seeding {} against {} %.", near.sensor, pct(mean(&near.stride)), pct(mean(&paper.stride)), pct(mean(&near.tree)), pct(mean(&paper.tree)), pct(mean(&near.seeded)), pct(mean(&paper.seeded)))?;
+    }
+    Ok(())
+}
+
+/// What the twenty-first round showed, written after its one test run.
+const SEEDING_NOTES: &str = "(Written after the test run.)";
+
+fn seeding_table(o: &mut String, r: &Report) -> Res<()> {
+    writeln!(o, "| family | sensor | preset | stride k-means | k-means++ best of 10 | k-means, spectral seeding | hk-means++, 10 trials | spectral | room-level 1-NN | target |")?;
+    writeln!(o, "|---|---|---|---|---|---|---|---|---|---|")?;
+    for x in &r.rows {
+        writeln!(o, "| {} |", x.cells().join(" | "))?;
+    }
+    Ok(())
+}
+
+fn render_seeding(dev: &Report, test: &Report) -> Res<String> {
+    let mut o = String::new();
+    writeln!(
+        o,
+        "# k-means with spectral seeding (issue 18, twenty-first round)\n"
+    )?;
+    writeln!(o, "**Method.** k-means whose centres start at the means of spectral clustering's groups (`--seeding spectral`, `Seeding::Spectral`): spectral clustering of the preset's Delta matrix (the eighteenth round's, `SpectralParams` defaults, seeded with the clustering seed), each centre the mean of one group, then Lloyd's iterations on the preset's distance (at most 100), one run. Nothing in it was tuned; no descriptor, weight or preset changed. The hypothesis and the rule were fixed in docs/seeds.md (\"issue 18, twenty-first round\") before any run: the seeding is an option whatever the figures (the defaults do not change); the docs recommend it for sets of room scans if on the test seeds, with `{RULE_PRESET}`, its mean over the 14 room rows is above k-means++ best of 10's and it is lower than best of 10 in at most {MOST_ROWS_LOWER} of them. The families, sensors, presets and other methods are the twentieth round's (docs/order-free.md): room sets listed in a random order, routes in the order recorded.\n")?;
+    writeln!(
+        o,
+        "## Readings on the test seeds {}-{}\n",
+        SEEDING_TEST_SEEDS[0],
+        SEEDING_TEST_SEEDS[SEEDING_TEST_SEEDS.len() - 1]
+    )?;
+    seeding_readings(&mut o, test)?;
+    writeln!(o, "\nRegenerate with `cargo run --release --example order_free_round -- --seeding --dev` (`spectral-seeding-round-dev.json`, {:.0} s) then `cargo run --release --example order_free_round -- --seeding` (test seeds, this file and `spectral-seeding-round.json`, {:.0} s; it refuses to run again once `spectral-seeding-round.json` exists; `-- --seeding --render` renders this file from them). Every run of the seeding is checked, in the run, against k-means from the means of spectral clustering's groups computed in the example (the development look's way). Columns as in docs/order-free.md, with k-means of spectral seeding (clustering seeds 0-9, mean) after best of 10. Target column: room rows, stride k-means and best of 10 each at least 85 % (as the earlier rounds read it); the warehouse, hk-means++ at least 95 %.\n", dev.seconds, test.seconds)?;
+    writeln!(o, "## What it shows\n\n{SEEDING_NOTES}\n")?;
+    writeln!(
+        o,
+        "## 1. Test seeds {}-{}\n",
+        SEEDING_TEST_SEEDS[0],
+        SEEDING_TEST_SEEDS[SEEDING_TEST_SEEDS.len() - 1]
+    )?;
+    seeding_table(&mut o, test)?;
+    writeln!(o, "\n## 2. Development seeds 1-6 (run first, to check the library against the look; they decide nothing)\n")?;
+    seeding_readings(&mut o, dev)?;
+    writeln!(o)?;
+    seeding_table(&mut o, dev)?;
+    Ok(o)
 }

@@ -19,6 +19,16 @@ pub enum Seeding {
     /// k-means++: each next seed drawn with probability proportional to the
     /// squared Delta to the nearest seed so far.
     PlusPlus,
+    /// Spectral (k-means only): each centre starts at the mean of one group
+    /// of spectral clustering ([`Spectral`](crate::cluster::Spectral) with
+    /// its defaults and this seed) of the scans' Delta matrix, then Lloyd's
+    /// iterations as for any seeding. It does not start from the scans'
+    /// order as stride does; it needs the matrix, so it takes at most
+    /// [`spectral::MAX_SCANS`](crate::cluster::spectral::MAX_SCANS) scans.
+    /// Added in issue 18's twenty-first round (docs/seeds.md): on room
+    /// sets k-means' cheapest runs are not the kinds, and k-means started
+    /// from spectral clustering's groups stays near them.
+    Spectral,
 }
 
 impl std::str::FromStr for Seeding {
@@ -28,8 +38,9 @@ impl std::str::FromStr for Seeding {
             "random" => Ok(Seeding::Random),
             "stride" | "deterministic" => Ok(Seeding::Stride),
             "plusplus" | "kmeans++" | "++" => Ok(Seeding::PlusPlus),
+            "spectral" => Ok(Seeding::Spectral),
             other => invalid(format!(
-                "unknown seeding {other:?} (random, stride, plusplus)"
+                "unknown seeding {other:?} (random, stride, plusplus, spectral)"
             )),
         }
     }
@@ -110,7 +121,11 @@ pub(crate) fn seeds(
     match seeding {
         Seeding::Stride => (0..k).map(|i| i * n / k).collect(),
         Seeding::Random => rand::seq::index::sample(r, n, k).into_vec(),
-        Seeding::PlusPlus => {
+        // Spectral seeding starts from its groups' means, which k-means
+        // computes before any run (kmeans::algorithm), so no scan is picked
+        // here; hierarchical k-means++ and k-medoids seed with k-means++.
+        // Were it ever asked for here, k-means++ is the seeding it refines.
+        Seeding::PlusPlus | Seeding::Spectral => {
             let mut chosen = vec![r.random_range(0..n)];
             let mut nearest: Vec<f64> = (0..n)
                 .map(|i| space.delta(members[i], members[chosen[0]]) as f64)

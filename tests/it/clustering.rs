@@ -155,6 +155,54 @@ fn seeds_give_identical_results_and_parameters_are_checked() {
     assert!(t1.cut_k(0).is_err());
 }
 
+/// Spectral seeding (issue 18, twenty-first round) is k-means from the
+/// means of spectral clustering's groups, recomputed here from the parts.
+#[test]
+fn spectral_seeding_is_kmeans_from_the_spectral_groups_means() {
+    let (ds, truth) = sim_set(4, 11);
+    let space = Space::new(&ds, DistanceOptions::default()).unwrap();
+    assert_eq!("spectral".parse::<Seeding>().unwrap(), Seeding::Spectral);
+    for seed in [0, 3] {
+        let params = KMeansParams::new(5).seeding(Seeding::Spectral).seed(seed);
+        let fit = KMeans::fit(&space, &params).unwrap();
+        let groups = Spectral::fit(&space.matrix(), &SpectralParams::new(5).seed(seed)).unwrap();
+        let centres: Vec<Centre> = (0..5)
+            .map(|g| {
+                let members: Vec<usize> = (0..truth.len())
+                    .filter(|&i| groups.labels[i] == g)
+                    .collect();
+                space.mean(&members, &space.centre_of(members[0])).unwrap()
+            })
+            .collect();
+        let expected = KMeans::fit_from_centres(&space, centres, 100).unwrap();
+        assert_eq!(fit.labels, expected.labels, "seed {seed}");
+        assert_eq!(fit.cost, expected.cost);
+        assert!(fit.seeds.is_empty() && fit.restart == 0);
+        // Not k-means++ of the same seed under another name.
+        let plusplus = KMeans::fit(&space, &KMeansParams::new(5).seed(seed)).unwrap();
+        assert_ne!(fit.cost, plusplus.cost, "seed {seed}");
+    }
+    let e = KMeans::fit(
+        &space,
+        &KMeansParams::new(5).seeding(Seeding::Spectral).restarts(2),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("restarts = 2 with spectral seeding"), "{e}");
+    // Refused above spectral clustering's size, before any matrix.
+    let many: Vec<Descriptor> = ds.iter().cycle().take(2001).cloned().collect();
+    let big = Space::new(&many, DistanceOptions::default()).unwrap();
+    let e = KMeans::fit(&big, &KMeansParams::new(5).seeding(Seeding::Spectral))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("spectral seeding takes at most 2000 scans"),
+        "{e}"
+    );
+    let e = "spectrall".parse::<Seeding>().unwrap_err().to_string();
+    assert!(e.contains("spectral"), "{e}");
+}
+
 #[test]
 fn kmeans_from_given_centres_is_kmeans_from_its_seeds() {
     let (ds, truth) = sim_set(4, 11);

@@ -1,8 +1,11 @@
 use super::hyperparams::KMeansValidParams;
-use crate::cluster::lloyd::{cheaper, check_iterations, check_k, fit_subset, iterate, Lloyd};
+use crate::cluster::lloyd::{
+    cheaper, check_iterations, check_k, fit_subset, iterate, Lloyd, Seeding,
+};
+use crate::cluster::spectral::{Spectral, SpectralParams, MAX_SCANS};
 use crate::cluster::ParamGuard;
 use crate::distance::{Centre, Space};
-use crate::error::Result;
+use crate::error::{invalid, Error, Result};
 use crate::rng::rng_stream;
 use serde::{Deserialize, Serialize};
 
@@ -12,7 +15,8 @@ use serde::{Deserialize, Serialize};
 pub struct KMeansResult {
     /// Category of each scan, 0..k.
     pub labels: Vec<i32>,
-    /// Scans the centres started at.
+    /// Scans the centres started at (empty with spectral seeding, whose
+    /// centres start at its groups' means).
     pub seeds: Vec<usize>,
     /// Assign/update rounds run.
     pub iterations: usize,
@@ -69,7 +73,18 @@ impl KMeans {
         let params = params.check()?;
         let all: Vec<usize> = (0..space.len()).collect();
         check_k(params.k, all.len())?;
-        Ok((0..params.restarts).map(move |restart| Self::run(space, &all, &params, restart)))
+        // Spectral seeding's centres are known before the (single) run.
+        let start = match params.seeding {
+            Seeding::Spectral => Some(spectral_start(space, &params)?),
+            _ => None,
+        };
+        Ok((0..params.restarts).map(move |restart| match &start {
+            Some(centres) => {
+                let run = iterate(space, &all, centres.clone(), params.max_iterations);
+                KMeansResult::of(run, Vec::new(), restart)
+            }
+            None => Self::run(space, &all, &params, restart),
+        }))
     }
 
     /// Run `restart` of k-means: seeding and Lloyd's iterations with RNG
@@ -112,6 +127,40 @@ impl KMeans {
         let run = iterate(space, &all, centres, max_iterations);
         Ok(KMeansResult::of(run, Vec::new(), 0))
     }
+}
+
+/// Spectral seeding's centres: the means of the groups of spectral
+/// clustering of the space's Delta matrix (its defaults, `params.seed`).
+fn spectral_start(space: &Space, params: &KMeansValidParams) -> Result<Vec<Centre>> {
+    if space.len() > MAX_SCANS {
+        return invalid(format!(
+            "spectral seeding takes at most {MAX_SCANS} scans (it clusters their Delta matrix \
+             spectrally first), got {}; use plusplus seeding",
+            space.len()
+        ));
+    }
+    let groups = Spectral::fit(
+        &space.matrix(),
+        &SpectralParams::new(params.k).seed(params.seed),
+    )?;
+    (0..params.k as i32)
+        .map(|g| {
+            let members: Vec<usize> = (0..groups.labels.len())
+                .filter(|&i| groups.labels[i] == g)
+                .collect();
+            // Spectral clustering returns k groups of at least one scan; the
+            // first member orients the mean as Lloyd's update does.
+            members
+                .first()
+                .and_then(|&first| space.mean(&members, &space.centre_of(first)))
+                .ok_or_else(|| {
+                    Error::InvalidParameter(format!(
+                        "spectral seeding: spectral clustering left group {g} of {} empty",
+                        params.k
+                    ))
+                })
+        })
+        .collect()
 }
 
 impl KMeansResult {

@@ -11,7 +11,8 @@ pub struct KMeansParams {
     pub k: usize,
     /// How the k initial centres are chosen.
     pub seeding: Seeding,
-    /// Seed of the RNG (random and k-means++ seedings).
+    /// Seed of the RNG (random and k-means++ seedings; spectral seeding's
+    /// spectral clustering).
     pub seed: u64,
     /// Iteration cap (at least 1).
     pub max_iterations: usize,
@@ -25,7 +26,8 @@ pub struct KMeansParams {
     /// single run. Run r draws from stream r of the RNG seeded with `seed`
     /// ([`crate::rng::rng_stream`]), so run 0 is the single run. More than
     /// 1 only with a random seeding: stride seeding would run the same
-    /// clustering every time.
+    /// clustering every time, and spectral seeding keeps the cheapest of
+    /// its own runs.
     #[serde(default = "one_run")]
     pub restarts: usize,
 }
@@ -71,6 +73,12 @@ fn check_restarts(restarts: usize, seeding: Seeding) -> Result<()> {
             "restarts = {restarts} with stride (deterministic) seeding: every run would start \
              from the same centres and give the same clustering; use plusplus or random \
              seeding, or restarts = 1"
+        ));
+    }
+    if restarts > 1 && seeding == Seeding::Spectral {
+        return invalid(format!(
+            "restarts = {restarts} with spectral seeding: it starts from spectral clustering's \
+             groups, which keeps the cheapest of its own 10 runs; use restarts = 1"
         ));
     }
     Ok(())
