@@ -131,8 +131,8 @@ export interface PresetNote {
     name: Preset;
     note: string;
 }
-/** k-means seeding: random scans, stride ("deterministic": scan i*n/k), or k-means++. */
-export type Seeding = "random" | "stride" | "deterministic" | "plusplus";
+/** k-means seeding: random scans, stride ("deterministic": scan i*n/k), k-means++, or spectral (the means of spectral clustering's groups). */
+export type Seeding = "random" | "stride" | "deterministic" | "plusplus" | "spectral";
 /** One simulated scan: its file name, true kind, pose and binary PLY bytes. */
 export interface SimulatedScan {
     name: string;

@@ -370,7 +370,9 @@ async function clusterBy(m, mine) {
       if (state.cut) return render();
       return cutTree({ k: state.firstCut?.k ?? 1 });
     }
-    const labels = m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed, m.restarts)
+    // k-means with spectral seeding clusters spectrally first: in a worker, as spectral clustering.
+    const labels = m.method === 'kmeans' && m.seeding === 'spectral' ? await spectralInWorker(m.k, m.kmSeed, mine, true)
+      : m.method === 'kmeans' ? engine.kmeans(m.k, m.seeding, m.kmSeed, m.restarts)
       : m.method === 'spectral' ? await spectralInWorker(m.spK, m.spSeed, mine)
         : engine.dbscan(m.eps, m.minPoints);
     if (!labels) return; // a spectral clustering superseded or cancelled
@@ -386,25 +388,27 @@ async function clusterBy(m, mine) {
  * the scans (in Node's wasm 1.4 s for 1000, 11 s for 2000), so on the page's
  * thread it would hold the page. The worker gets the set's Delta matrix,
  * computed once already. Resolves to null when a newer clustering, a new run
- * or Cancel came meanwhile.
+ * or Cancel came meanwhile. With `kmeansSeeded`, k-means started from spectral
+ * clustering's groups (the `spectral` seeding), which clusters spectrally first.
  * @param {number} k @param {number} seed @param {number} mine this clustering's number (`clusterings`)
- * @returns {Promise<Int32Array | null>}
+ * @param {boolean} [kmeansSeeded] @returns {Promise<Int32Array | null>}
  */
-async function spectralInWorker(k, seed, mine) {
+async function spectralInWorker(k, seed, mine, kmeansSeeded = false) {
   const set = state.set;
   const superseded = () => mine !== clusterings || state.set !== set;
   const n = state.scans.length;
+  const what = kmeansSeeded ? 'k-means with spectral seeding' : 'spectral clustering';
   // Refused here, before the matrix is copied out for a worker, at the core's own limit
   // (without a set, the engine refuses, as for the other methods).
-  if (set && n > set.spectralLimit) throw new RangeError(`spectral clustering takes at most ${set.spectralLimit} scans (it grows with the cube of their number), got ${n}; use the tree or k-means`);
+  if (set && n > set.spectralLimit) throw new RangeError(`${what} takes at most ${set.spectralLimit} scans (it grows with the cube of their number), got ${n}; use the tree or k-means++`);
   const start = performance.now();
   const task = pool.run({
     type: 'spectral', params: /** @type {S.State['params'] & {}} */ (state.params), descriptorJsons: state.scans.map((r) => r.descriptorJson),
-    matrix: engine.deltaMatrix(), k, seed,
+    matrix: engine.deltaMatrix(), k, seed, kmeansSeeded,
   });
   spectralTasks.add(task);
   document.body.dataset.spectral = String(spectralTasks.size);
-  view.status(`Spectral clustering of ${n} ${n === 1 ? 'scan' : 'scans'} into ${k} in a worker...`);
+  view.status(`${what[0].toUpperCase()}${what.slice(1)} of ${n} ${n === 1 ? 'scan' : 'scans'} into ${k} in a worker...`);
   try {
     const labels = await task;
     if (superseded()) return null;
@@ -413,7 +417,7 @@ async function spectralInWorker(k, seed, mine) {
   } catch (e) {
     if (superseded()) return null;
     if (/** @type {Error} */ (e).message === 'cancelled') {
-      view.status('Spectral clustering cancelled; choose k or the method again to run it.');
+      view.status(`${what[0].toUpperCase()}${what.slice(1)} cancelled; choose k or the method again to run it.`);
       return null;
     }
     throw e;

@@ -377,14 +377,17 @@ export class Describer {
    * Spectral clustering in a worker, so that the page stays live however long
    * it takes (it grows with the cube of the scans; the core takes at most 2000):
    * a set of these descriptors with this Delta matrix (the page's, so that it is
-   * not computed twice), clustered into `k`. The core's errors are thrown as they are.
+   * not computed twice), clustered into `k`; with `kmeansSeeded`, k-means
+   * started from spectral clustering's groups (`spectral` seeding) instead.
+   * The core's errors are thrown as they are.
    * @param {Params} params @param {string[]} descriptorJsons @param {Float32Array} matrix n x n, row-major
-   * @param {number} k @param {number} seed @returns {Int32Array}
+   * @param {number} k @param {number} seed @param {boolean} [kmeansSeeded] @returns {Int32Array}
    */
-  spectral(params, descriptorJsons, matrix, k, seed) {
+  spectral(params, descriptorJsons, matrix, k, seed, kmeansSeeded = false) {
     return scoped(descriptorSet(this.wasm, params, descriptorJsons), (set) => {
       set.setDeltaMatrix(matrix);
-      return Int32Array.from(set.spectral(k, seed).labels);
+      const result = kmeansSeeded ? set.kmeans(k, 'spectral', seed, 1) : set.spectral(k, seed);
+      return Int32Array.from(result.labels);
     });
   }
 

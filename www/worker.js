@@ -34,7 +34,7 @@ async function run(task, partial, clock, file) {
   }
   if (task.type === 'deltaRows') return describer.deltaRows(task.key, task.params, task.descriptorJsons, task.rows);
   if (task.type === 'references') return describer.referenceDispersions(task.key, task.params, task.descriptorJsons, task.seed, task.which, task.restarts);
-  if (task.type === 'spectral') return describer.spectral(task.params, task.descriptorJsons, task.matrix, task.k, task.seed);
+  if (task.type === 'spectral') return describer.spectral(task.params, task.descriptorJsons, task.matrix, task.k, task.seed, task.kmeansSeeded);
   if (task.type === 'simulate') return describer.simulate(task, task.params, task.previewPoints);
   if (task.type === 'classify') {
     return describer.classify(new Uint8Array(await /** @type {Promise<ArrayBuffer>} */ (file)), task.name, task.modelJson);

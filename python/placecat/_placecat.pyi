@@ -141,9 +141,12 @@ class Collection:
     ) -> Dict[str, Any]:
         """labels, k, categories, seeding, seed, iterations, converged, cost,
         restarts, restart: the cheapest of `restarts` k-means runs (1: the
-        paper's single run; at most 1000). `seeding`: plusplus, random or
+        paper's single run; at most 1000). `seeding`: plusplus, random,
         stride (the paper's deterministic seeding, scans i*n/k of the set's
-        order, so its result depends on that order: docs/stride-order.md)."""
+        order, so its result depends on that order: docs/stride-order.md) or
+        spectral (each centre starts at the mean of one group of spectral
+        clustering seeded with `seed`; one run, at most 2000 scans;
+        recommended for sets of room scans: docs/spectral-seeding-round.md)."""
     def kmedoids(self, k: int, seed: int = 0) -> Dict[str, Any]: ...
     def spectral(
         self, k: int, seed: int = 0, restarts: int = 10, neighbours: int = 7

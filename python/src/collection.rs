@@ -139,7 +139,9 @@ impl PyCollection {
     /// k-means: k an int or "auto" (chosen as the CLI chooses it; the
     /// choice is under "choice"). `restarts`: runs of k-means, the one of
     /// lowest cost kept (1: the paper's single run; at most 1000; more
-    /// than 1 needs random or plusplus seeding). A dict: labels, k, categories, seeding, seed,
+    /// than 1 needs random or plusplus seeding). `seeding`: plusplus,
+    /// random, stride or spectral (each centre the mean of one group of
+    /// spectral clustering; at most 2000 scans). A dict: labels, k, categories, seeding, seed,
     /// iterations, converged, cost, restarts, restart (the run kept).
     #[pyo3(signature = (k=None, seeding="plusplus", seed=0, restarts=1))]
     fn kmeans<'py>(

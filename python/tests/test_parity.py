@@ -63,6 +63,25 @@ def test_kmeans_restarts_equal_the_cli(described, parity_files, tmp_path):
     assert (one["cost"], ten["cost"]) == (pytest.approx(4.0403, abs=1e-4), pytest.approx(3.7884, abs=1e-4))
 
 
+def test_spectral_seeding_equals_the_cli(described, parity_files, tmp_path):
+    """k-means with spectral seeding gives the CLI's labels and cost; it is
+    not k-means++ of the same seed under another name."""
+    cli_describe(parity_files, tmp_path / "d.json")
+    c = placecat.Collection(described)
+    r = c.kmeans(4, seeding="spectral", seed=3)
+    cli = json.loads(
+        run_cli(
+            "cluster", tmp_path / "d.json", "--method", "kmeans", "--k", "4", "--seeding", "spectral", "--seed", "3",
+            "-o", "-",
+        ).stdout
+    )
+    assert r["labels"].tolist() == cli["labels"] and cli["seeding"] == r["seeding"] == "spectral"
+    assert r["cost"] == pytest.approx(cli["cost"], rel=1e-12)
+    assert r["cost"] != pytest.approx(c.kmeans(4, seed=3)["cost"], rel=1e-9)
+    with pytest.raises(placecat.PlacecatError, match="restarts = 2 with spectral seeding"):
+        c.kmeans(4, seeding="spectral", restarts=2)
+
+
 def test_spectral_equals_the_cli_and_a_numpy_recomputation(described, parity_files, tmp_path):
     """Spectral clustering gives the CLI's labels, and its eigenvalues are
     those numpy finds from the Delta matrix by the same steps (the 7th

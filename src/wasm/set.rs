@@ -71,7 +71,10 @@ impl DescriptorSet {
         let n = self.set.len();
         Ok(self.set.set_matrix(DistanceMatrix { n, data })?)
     }
-    /// k-means: `seeding` is `random`, `stride` or `plusplus`. `restarts`
+    /// k-means: `seeding` is `random`, `stride`, `plusplus` or `spectral`
+    /// (each centre starts at the mean of one group of spectral clustering
+    /// seeded with `seed`; one run, at most `spectralLimit` scans; for sets
+    /// of room scans, not along a route). `restarts`
     /// (optional, default 1: the paper's single run): runs of k-means, the
     /// one of lowest cost kept, the earliest of equals (run r seeded from
     /// stream r of `seed`), a whole number up to 1000; more than 1 needs

@@ -235,7 +235,7 @@ test('the demo runs with no files and shows accuracy against its ground truth', 
   await h.page.screenshot({ path: join(ARTIFACTS, 'demo-indoor.png') });
 });
 
-test('k-means on the demo: "k-means++, best of 10" keeps the cheapest of ten runs', async () => {
+test('k-means on the demo: "k-means++, best of 10" keeps the cheapest of ten runs; spectral seeding runs in a worker', async () => {
   await h.page.selectOption('#method', 'kmeans'); // k 5, k-means++
   const seed = async (n) => {
     await h.page.fill('#km-seed', String(n));
@@ -251,6 +251,11 @@ test('k-means on the demo: "k-means++, best of 10" keeps the cheapest of ten run
     assert.equal(await accuracy(), '100.0');
     await h.page.selectOption('#seeding', { index: 0 });
     assert.equal(await accuracy(), '75.0', 'back to one run');
+    // k-means from spectral clustering's groups (seed 1, measured with the engine in Node):
+    // one corridor scan with another kind, where seed 1's k-means++ run merged two kinds.
+    await afterClustering(h.page, () => h.page.selectOption('#seeding', 'spectral'));
+    assert.equal(await accuracy(), '97.5');
+    await h.page.waitForFunction(() => document.body.dataset.spectral === '0'); // its worker task ended
   } finally {
     // The tests after this one expect the page's default method.
     await h.page.selectOption('#seeding', { index: 0 });

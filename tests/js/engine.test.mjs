@@ -128,7 +128,13 @@ test('a worker clusters spectrally with the page\'s matrix: the same labels, the
     assert.deepEqual([...inWorker], [...own], `seed ${seed}`);
     // Seed 0: one corridor scan with another kind (measured; the e2e test sees it on the page).
     if (seed === 0) assert.equal(e.evaluate(scans.map((s) => s.label), inWorker).accuracy, 0.975);
+    // k-means with spectral seeding, in a worker as the page runs it: the engine's own k-means.
+    const seeded = d.spectral(params, jsons, matrix, 5, seed, true);
+    assert.deepEqual([...seeded], [...e.kmeans(5, 'spectral', seed)], `seed ${seed}`);
+    // Seed 0: as spectral clustering, one corridor scan with another kind (measured).
+    if (seed === 0) assert.equal(e.evaluate(scans.map((s) => s.label), seeded).accuracy, 0.975);
   }
+  assert.throws(() => e.kmeans(5, 'spectral', 0, 2), /restarts = 2 with spectral seeding/);
   // A matrix that is not the set's is refused (spot-checked against the set's own Delta).
   const halves = new Float32Array(40 * 40).map((_, at) => {
     const [i, j] = [Math.floor(at / 40), at % 40];
@@ -144,6 +150,7 @@ test('a worker clusters spectrally with the page\'s matrix: the same labels, the
   const tiled = new Float32Array(n * n).map((_, at) => matrix[(Math.floor(at / n) % 40) * 40 + ((at % n) % 40)]);
   // The page refuses where the core does: spectralLimit is the core's own limit.
   assert.throws(() => d.spectral(params, many, tiled, 5, 0), new RegExp(`^Error: invalid parameter: spectral clustering takes at most ${spectralLimit} scans .*got ${n}`));
+  assert.throws(() => d.spectral(params, many, tiled, 5, 0, true), new RegExp(`^Error: invalid parameter: spectral seeding takes at most ${spectralLimit} scans .*got ${n}`));
   e.dispose();
 });
 

@@ -8,7 +8,7 @@
 //! - `placecat describe BAG... [--topic T] [--every N | --every-metres D] [--pose-topic T | --tf-frame F | --no-poses] [--poses-out POSES.csv] -o OUT.json`
 //! - `placecat topics BAG [--json]`
 //! - `placecat distances DESCRIPTORS.json [-o OUT.csv]`
-//! - `placecat cluster DESCRIPTORS.json --method kmeans --k K --seeding random|stride|plusplus --seed S [--restarts N] -o OUT.json`
+//! - `placecat cluster DESCRIPTORS.json --method kmeans --k K --seeding random|stride|plusplus|spectral --seed S [--restarts N] -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method hkmeans [--threshold T | --categories K|auto] --seed S [--restarts N] -o OUT.json`
 //! - `placecat cluster DESCRIPTORS.json --method spectral --k K [--seed S] [--restarts N] [--neighbours M] -o OUT.json` (at most 2000 scans)
 //! - `placecat cluster DESCRIPTORS.json --method dbscan --eps E --min-points C -o OUT.json`

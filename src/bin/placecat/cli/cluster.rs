@@ -27,10 +27,13 @@ pub struct ClusterArgs {
     /// `categories` in OUT.json).
     #[arg(long)]
     pub k: Option<Count>,
-    /// k-means seeding: random, stride, plusplus. Stride (the paper's
-    /// deterministic seeding) starts from scans i*n/k of the input's order,
-    /// so its result depends on that order: along a recording the route's,
-    /// for room scans the files'.
+    /// k-means seeding: random, stride, plusplus, spectral. Stride (the
+    /// paper's deterministic seeding) starts from scans i*n/k of the input's
+    /// order, so its result depends on that order: along a recording the
+    /// route's, for room scans the files'. Spectral starts each centre at
+    /// the mean of one group of spectral clustering (--seed seeds it; one
+    /// run; at most 2000 scans); recommended for sets of room scans
+    /// (docs/spectral-seeding-round.md), not along a route.
     #[arg(long, default_value = "plusplus")]
     pub seeding: String,
     /// kmeans: runs of k-means, each from its own seeding, keeping the one
