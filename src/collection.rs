@@ -6,6 +6,7 @@
 
 use crate::cluster::choose_k::{self, Choice, ChooseKParams, Clusterer, Method, DEFAULT_RULE};
 use crate::cluster::hkmeans::HkMeansParams;
+use crate::cluster::kmeans::{check_seeding_size, Seeding};
 use crate::cluster::{
     medoids, medoids_by, Dbscan, DbscanParams, HierarchicalKMeans, KMeans, KMeansParams,
     KMeansResult, KMedoids, KMedoidsParams, KMedoidsResult, Spectral, SpectralParams,
@@ -333,9 +334,15 @@ impl Collection {
         Ok(())
     }
 
-    /// k-means (needs no matrix).
+    /// k-means (needs no matrix, but for spectral seeding, which clusters
+    /// the set's Delta matrix first: the set's own, built once).
     pub fn kmeans(&mut self, params: &KMeansParams) -> Result<KMeansResult> {
         self.check_nonempty()?;
+        if params.seeding == Seeding::Spectral {
+            check_seeding_size(params.seeding, self.len())?;
+            let (space, matrix) = self.space_and_matrix()?;
+            return KMeans::fit_with_matrix(space, Some(matrix), params);
+        }
         KMeans::fit(self.space()?, params)
     }
 
@@ -403,6 +410,9 @@ impl Collection {
         params: &ChooseKParams,
     ) -> Result<Choice> {
         self.check_nonempty()?;
+        if let Method::KMeans(p) = clusterer.method() {
+            check_seeding_size(p.seeding, self.len())?;
+        }
         let all: Vec<usize> = (0..params.references).collect();
         let references = self.reference_log_w(clusterer.method(), params, &all)?;
         self.choose_categories_with(clusterer, params, &references)
@@ -419,6 +429,9 @@ impl Collection {
         which: &[usize],
     ) -> Result<Vec<Vec<f64>>> {
         self.check_nonempty()?;
+        if let Method::KMeans(p) = method {
+            check_seeding_size(p.seeding, self.len())?;
+        }
         choose_k::reference_log_w(self.space()?, method, params, which)
     }
 

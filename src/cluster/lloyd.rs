@@ -27,7 +27,8 @@ pub enum Seeding {
     /// [`spectral::MAX_SCANS`](crate::cluster::spectral::MAX_SCANS) scans.
     /// Added in issue 18's twenty-first round (docs/seeds.md): on room
     /// sets k-means' cheapest runs are not the kinds, and k-means started
-    /// from spectral clustering's groups stays near them.
+    /// from spectral clustering's groups stays near that grouping, which
+    /// is nearer the kinds (docs/spectral-seeding-round.md).
     Spectral,
 }
 
@@ -42,6 +43,29 @@ impl std::str::FromStr for Seeding {
             other => invalid(format!(
                 "unknown seeding {other:?} (random, stride, plusplus, spectral)"
             )),
+        }
+    }
+}
+
+/// The seedings that pick k scans as the first centres: every [`Seeding`]
+/// but spectral, which starts from its groups' means (k-means computes
+/// them before any run). Hierarchical k-means++ and k-medoids pick with
+/// k-means++.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Picking {
+    Random,
+    Stride,
+    PlusPlus,
+}
+
+impl Seeding {
+    /// How this seeding picks scans, if it does (not spectral seeding).
+    pub(crate) fn picking(self) -> Option<Picking> {
+        match self {
+            Seeding::Random => Some(Picking::Random),
+            Seeding::Stride => Some(Picking::Stride),
+            Seeding::PlusPlus => Some(Picking::PlusPlus),
+            Seeding::Spectral => None,
         }
     }
 }
@@ -114,18 +138,14 @@ pub(crate) fn seeds(
     space: &Space,
     members: &[usize],
     k: usize,
-    seeding: Seeding,
+    picking: Picking,
     r: &mut ChaCha8Rng,
 ) -> Vec<usize> {
     let n = members.len();
-    match seeding {
-        Seeding::Stride => (0..k).map(|i| i * n / k).collect(),
-        Seeding::Random => rand::seq::index::sample(r, n, k).into_vec(),
-        // Spectral seeding starts from its groups' means, which k-means
-        // computes before any run (kmeans::algorithm), so no scan is picked
-        // here; hierarchical k-means++ and k-medoids seed with k-means++.
-        // Were it ever asked for here, k-means++ is the seeding it refines.
-        Seeding::PlusPlus | Seeding::Spectral => {
+    match picking {
+        Picking::Stride => (0..k).map(|i| i * n / k).collect(),
+        Picking::Random => rand::seq::index::sample(r, n, k).into_vec(),
+        Picking::PlusPlus => {
             let mut chosen = vec![r.random_range(0..n)];
             let mut nearest: Vec<f64> = (0..n)
                 .map(|i| space.delta(members[i], members[chosen[0]]) as f64)
@@ -168,17 +188,17 @@ pub(crate) struct Lloyd {
     pub cost: f64,
 }
 
-/// k-means on a subset: the seeds `seeding` picks, then [`iterate`]. The
+/// k-means on a subset: the seeds `picking` picks, then [`iterate`]. The
 /// seeds are positions in `members`.
 pub(crate) fn fit_subset(
     space: &Space,
     members: &[usize],
     k: usize,
-    seeding: Seeding,
+    picking: Picking,
     max_iterations: usize,
     r: &mut ChaCha8Rng,
 ) -> (Lloyd, Vec<usize>) {
-    let seed_pos = seeds(space, members, k, seeding, r);
+    let seed_pos = seeds(space, members, k, picking, r);
     let centres: Vec<Centre> = seed_pos
         .iter()
         .map(|&s| space.centre_of(members[s]))

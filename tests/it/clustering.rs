@@ -189,10 +189,59 @@ fn spectral_seeding_is_kmeans_from_the_spectral_groups_means() {
     .unwrap_err()
     .to_string();
     assert!(e.contains("restarts = 2 with spectral seeding"), "{e}");
+    // With the caller's matrix (a set's own, as Collection::kmeans and the
+    // choice of K pass it): the same run; a matrix of other scans refused.
+    let given = space.matrix();
+    let params = KMeansParams::new(5).seeding(Seeding::Spectral).seed(3);
+    assert_eq!(
+        KMeans::fit_with_matrix(&space, Some(&given), &params).unwrap(),
+        KMeans::fit(&space, &params).unwrap()
+    );
+    let small = DistanceMatrix::from_fn(4, |i, j| (i != j) as u8 as f32);
+    let e = KMeans::fit_with_matrix(&space, Some(&small), &params)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("a Delta matrix of 4 scans for 20 scans"), "{e}");
+    let named = ds
+        .iter()
+        .enumerate()
+        .map(|(i, d)| (format!("s{i}"), d.clone()));
+    let mut set = placecat::Collection::from_parts(DescriptorParams::indoor(), named).unwrap();
+    assert_eq!(
+        set.kmeans(&params).unwrap(),
+        KMeans::fit(&space, &params).unwrap()
+    );
     // Refused above spectral clustering's size, before any matrix.
     let many: Vec<Descriptor> = ds.iter().cycle().take(2001).cloned().collect();
     let big = Space::new(&many, DistanceOptions::default()).unwrap();
     let e = KMeans::fit(&big, &KMeansParams::new(5).seeding(Seeding::Spectral))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("spectral seeding takes at most 2000 scans"),
+        "{e}"
+    );
+    // A set's k-means and its choice of K refuse it before building the
+    // matrix or clustering any reference set.
+    let named = many
+        .iter()
+        .enumerate()
+        .map(|(i, d)| (format!("s{i}"), d.clone()));
+    let mut big_set = placecat::Collection::from_parts(DescriptorParams::indoor(), named).unwrap();
+    let e = big_set
+        .kmeans(&KMeansParams::new(5).seeding(Seeding::Spectral))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("spectral seeding takes at most 2000 scans"),
+        "{e}"
+    );
+    let spectral = KMeansParams::new(1).seeding(Seeding::Spectral);
+    let e = big_set
+        .choose_categories(
+            choose_k::Clusterer::KMeans(&spectral),
+            &choose_k::ChooseKParams::default(),
+        )
         .unwrap_err()
         .to_string();
     assert!(

@@ -69,7 +69,7 @@ mod silhouette;
 pub use silhouette::mean_silhouette;
 
 use crate::cluster::hkmeans::{HkMeansParams, EXACT_DIAMETER_LIMIT};
-use crate::cluster::{HierarchicalKMeans, KMeans, KMeansParams, Tree};
+use crate::cluster::{HierarchicalKMeans, KMeans, KMeansParams, Seeding, Tree};
 use crate::distance::DistanceMatrix;
 use crate::distance::Space;
 use crate::error::{invalid, Result};
@@ -241,12 +241,28 @@ pub fn choose_k(
     scores(space, matrix, clusterer, params)?.choose(rule)
 }
 
-/// k-means' categories of `space` at K = 1..=k_max.
-fn kmeans_partitions(space: &Space, p: &KMeansParams, k_max: usize) -> Result<Vec<Vec<i32>>> {
+/// k-means' categories of `space` at K = 1..=k_max; `matrix`, the
+/// space's Delta matrix if the caller has it (spectral seeding clusters
+/// it, computed here once otherwise).
+fn kmeans_partitions(
+    space: &Space,
+    matrix: Option<&DistanceMatrix>,
+    p: &KMeansParams,
+    k_max: usize,
+) -> Result<Vec<Vec<i32>>> {
+    let own;
+    let matrix = match (matrix, p.seeding) {
+        (None, Seeding::Spectral) => {
+            crate::cluster::kmeans::check_seeding_size(p.seeding, space.len())?;
+            own = space.matrix();
+            Some(&own)
+        }
+        (m, _) => m,
+    };
     (1..=k_max)
         .map(|k| {
             let p = KMeansParams { k, ..p.clone() };
-            Ok(KMeans::fit(space, &p)?.labels)
+            Ok(KMeans::fit_with_matrix(space, matrix, &p)?.labels)
         })
         .collect()
 }
@@ -274,7 +290,7 @@ fn reference_partitions(space: &Space, method: Method, k_max: usize) -> Result<V
             };
             cuts(&tree, k_max)
         }
-        Method::KMeans(p) => kmeans_partitions(space, p, k_max),
+        Method::KMeans(p) => kmeans_partitions(space, None, p, k_max),
     }
 }
 
@@ -400,7 +416,7 @@ pub fn scores_with_references(
     }
     let labels = match clusterer {
         Clusterer::Tree(t, _) => cuts(t, k_max)?,
-        Clusterer::KMeans(p) => kmeans_partitions(space, p, k_max)?,
+        Clusterer::KMeans(p) => kmeans_partitions(space, matrix, p, k_max)?,
     };
     let silhouette = silhouettes(space, matrix, &labels, params);
     let log_w_data = log_w(space, &labels);

@@ -1,8 +1,7 @@
 use super::hyperparams::HkMeansValidParams;
 use super::tree::{Tree, TreeNode};
-use crate::cluster::lloyd::{cheaper, fit_subset};
+use crate::cluster::lloyd::{cheaper, fit_subset, Picking};
 use crate::cluster::ParamGuard;
-use crate::cluster::Seeding;
 use crate::distance::DistanceMatrix;
 use crate::distance::Space;
 use crate::error::Result;
@@ -176,7 +175,7 @@ fn cheapest_split(
             space,
             members,
             2,
-            Seeding::PlusPlus,
+            Picking::PlusPlus,
             params.max_iterations,
             r,
         )

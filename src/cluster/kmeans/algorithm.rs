@@ -1,10 +1,10 @@
 use super::hyperparams::KMeansValidParams;
 use crate::cluster::lloyd::{
-    cheaper, check_iterations, check_k, fit_subset, iterate, Lloyd, Seeding,
+    cheaper, check_iterations, check_k, fit_subset, iterate, Lloyd, Picking, Seeding,
 };
 use crate::cluster::spectral::{Spectral, SpectralParams, MAX_SCANS};
 use crate::cluster::ParamGuard;
-use crate::distance::{Centre, Space};
+use crate::distance::{Centre, DistanceMatrix, Space};
 use crate::error::{invalid, Error, Result};
 use crate::rng::rng_stream;
 use serde::{Deserialize, Serialize};
@@ -44,8 +44,20 @@ impl KMeans {
         space: &Space,
         params: &impl ParamGuard<Checked = KMeansValidParams>,
     ) -> Result<KMeansResult> {
+        Self::fit_with_matrix(space, None, params)
+    }
+
+    /// [`KMeans::fit`] with the space's Delta matrix when the caller has it
+    /// (spectral seeding clusters it; other seedings do not read it), so
+    /// that it is not computed again. An error if it is not n x n for the
+    /// space's n scans.
+    pub fn fit_with_matrix(
+        space: &Space,
+        matrix: Option<&DistanceMatrix>,
+        params: &impl ParamGuard<Checked = KMeansValidParams>,
+    ) -> Result<KMeansResult> {
         let mut best: Option<KMeansResult> = None;
-        for run in Self::lazy_runs(space, params)? {
+        for run in Self::lazy_runs(space, matrix, params)? {
             if best.as_ref().is_none_or(|b| cheaper(run.cost, b.cost)) {
                 best = Some(run);
             }
@@ -62,28 +74,30 @@ impl KMeans {
         space: &Space,
         params: &impl ParamGuard<Checked = KMeansValidParams>,
     ) -> Result<Vec<KMeansResult>> {
-        Ok(Self::lazy_runs(space, params)?.collect())
+        Ok(Self::lazy_runs(space, None, params)?.collect())
     }
 
     /// The runs of [`KMeans::runs`], each computed when asked for.
     fn lazy_runs<'a>(
         space: &'a Space,
+        matrix: Option<&DistanceMatrix>,
         params: &impl ParamGuard<Checked = KMeansValidParams>,
     ) -> Result<impl Iterator<Item = KMeansResult> + 'a> {
         let params = params.check()?;
         let all: Vec<usize> = (0..space.len()).collect();
         check_k(params.k, all.len())?;
-        // Spectral seeding's centres are known before the (single) run.
-        let start = match params.seeding {
-            Seeding::Spectral => Some(spectral_start(space, &params)?),
-            _ => None,
+        // A seeding picks scans in each run; spectral seeding's centres
+        // are known before its (single) run.
+        let start = match params.seeding.picking() {
+            Some(picking) => Start::Picking(picking),
+            None => Start::Centres(spectral_start(space, matrix, &params)?),
         };
         Ok((0..params.restarts).map(move |restart| match &start {
-            Some(centres) => {
+            Start::Centres(centres) => {
                 let run = iterate(space, &all, centres.clone(), params.max_iterations);
                 KMeansResult::of(run, Vec::new(), restart)
             }
-            None => Self::run(space, &all, &params, restart),
+            Start::Picking(picking) => Self::run(space, &all, &params, *picking, restart),
         }))
     }
 
@@ -93,17 +107,11 @@ impl KMeans {
         space: &Space,
         all: &[usize],
         params: &KMeansValidParams,
+        picking: Picking,
         restart: usize,
     ) -> KMeansResult {
         let mut r = rng_stream(params.seed, restart as u64);
-        let (run, seeds) = fit_subset(
-            space,
-            all,
-            params.k,
-            params.seeding,
-            params.max_iterations,
-            &mut r,
-        );
+        let (run, seeds) = fit_subset(space, all, params.k, picking, params.max_iterations, &mut r);
         KMeansResult::of(run, seeds.iter().map(|&s| all[s]).collect(), restart)
     }
 
@@ -129,20 +137,51 @@ impl KMeans {
     }
 }
 
-/// Spectral seeding's centres: the means of the groups of spectral
-/// clustering of the space's Delta matrix (its defaults, `params.seed`).
-fn spectral_start(space: &Space, params: &KMeansValidParams) -> Result<Vec<Centre>> {
-    if space.len() > MAX_SCANS {
+/// Where a k-means run starts: scans its seeding picks, or centres known
+/// beforehand (spectral seeding's groups' means).
+enum Start {
+    Picking(Picking),
+    Centres(Vec<Centre>),
+}
+
+/// Refuse spectral seeding of more than spectral clustering's
+/// [`MAX_SCANS`] scans (callers check first, before building a matrix or
+/// clustering reference sets).
+pub(crate) fn check_seeding_size(seeding: Seeding, n: usize) -> Result<()> {
+    if seeding == Seeding::Spectral && n > MAX_SCANS {
         return invalid(format!(
             "spectral seeding takes at most {MAX_SCANS} scans (it clusters their Delta matrix \
-             spectrally first), got {}; use plusplus seeding",
-            space.len()
+             spectrally first), got {n}; use plusplus seeding"
         ));
     }
-    let groups = Spectral::fit(
-        &space.matrix(),
-        &SpectralParams::new(params.k).seed(params.seed),
-    )?;
+    Ok(())
+}
+
+/// Spectral seeding's centres: the means of the groups of spectral
+/// clustering of the space's Delta matrix (`matrix`, else computed here;
+/// spectral clustering's defaults, `params.seed`).
+fn spectral_start(
+    space: &Space,
+    matrix: Option<&DistanceMatrix>,
+    params: &KMeansValidParams,
+) -> Result<Vec<Centre>> {
+    check_seeding_size(Seeding::Spectral, space.len())?;
+    let own;
+    let matrix = match matrix {
+        Some(m) if m.n != space.len() => {
+            return Err(Error::Mismatch(format!(
+                "a Delta matrix of {} scans for {} scans",
+                m.n,
+                space.len()
+            )))
+        }
+        Some(m) => m,
+        None => {
+            own = space.matrix();
+            &own
+        }
+    };
+    let groups = Spectral::fit(matrix, &SpectralParams::new(params.k).seed(params.seed))?;
     (0..params.k as i32)
         .map(|g| {
             let members: Vec<usize> = (0..groups.labels.len())

@@ -1,7 +1,7 @@
 //! k-medoids (alternating, "Voronoi iteration") on the precomputed Delta
 //! matrix: centres are scans, so no mean of matrices is needed.
 
-use crate::cluster::lloyd::{check_iterations, check_k, check_k_positive, seeds, Seeding};
+use crate::cluster::lloyd::{check_iterations, check_k, check_k_positive, seeds, Picking};
 use crate::cluster::{setters, validated, ParamGuard};
 use crate::distance::{DistanceMatrix, Space};
 use crate::error::Result;
@@ -81,7 +81,7 @@ impl KMedoids {
         check_k(k, matrix.n)?;
         let n = matrix.n;
         let all: Vec<usize> = (0..n).collect();
-        let mut medoids = seeds(space, &all, k, Seeding::PlusPlus, &mut rng(params.seed));
+        let mut medoids = seeds(space, &all, k, Picking::PlusPlus, &mut rng(params.seed));
         let mut labels = vec![0usize; n];
         for _ in 0..params.max_iterations {
             for (i, l) in labels.iter_mut().enumerate() {

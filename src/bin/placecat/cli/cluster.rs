@@ -33,6 +33,7 @@ pub struct ClusterArgs {
     /// route's, for room scans the files'. Spectral starts each centre at
     /// the mean of one group of spectral clustering (--seed seeds it; one
     /// run; at most 2000 scans); recommended for sets of room scans
+    /// described with indoor_searched or indoor_objects
     /// (docs/spectral-seeding-round.md), not along a route.
     #[arg(long, default_value = "plusplus")]
     pub seeding: String,
