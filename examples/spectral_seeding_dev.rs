@@ -23,7 +23,7 @@ const PRESETS: &[&str] = &["indoor_searched", "indoor_objects"];
 const ITERATIONS: usize = 100;
 
 /// Written after the run.
-const SHOWS: &str = "(written after the run)";
+const SHOWS: &str = "k-means started from spectral clustering's groups keeps their accuracy: over the 14 rows 92.0 % against spectral clustering's 91.9 % with `indoor_objects` (90.7 against 90.9 % with `indoor_searched`), 4.3 and 3.3 points above k-means++ best of 10, although it ends costlier than best of 10 of the same seed in 62.5 and 63.1 % of the runs. So Lloyd's iterations started from those groups stop at a local minimum near them, not at the cheapest grouping, as they do from the true kinds (docs/restart-count-dev.md). It differs from spectral clustering by more than a point in two of the 28 rows: lower on the office floor with `indoor_searched` (83.3 against 86.7 %), higher on the many buildings with `indoor_objects` (97.8 against 96.3 %). This look (its text written after the run) led to the plan of issue 18's twenty-first round (docs/seeds.md), which judged the seeding on fresh test seeds.";
 
 /// Each group's mean, the group's first scan orienting it as Lloyd's
 /// update does; groups numbered 0..k.

@@ -412,7 +412,7 @@ async function spectralInWorker(k, seed, mine, kmeansSeeded = false) {
   try {
     const labels = await task;
     if (superseded()) return null;
-    stageSince('spectral', start);
+    stageSince(kmeansSeeded ? 'kmeans' : 'spectral', start);
     return labels;
   } catch (e) {
     if (superseded()) return null;

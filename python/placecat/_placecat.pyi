@@ -146,7 +146,8 @@ class Collection:
         order, so its result depends on that order: docs/stride-order.md) or
         spectral (each centre starts at the mean of one group of spectral
         clustering seeded with `seed`; one run, at most 2000 scans;
-        recommended for sets of room scans: docs/spectral-seeding-round.md)."""
+        recommended for sets of room scans described with indoor_searched or
+        indoor_objects: docs/spectral-seeding-round.md)."""
     def kmedoids(self, k: int, seed: int = 0) -> Dict[str, Any]: ...
     def spectral(
         self, k: int, seed: int = 0, restarts: int = 10, neighbours: int = 7
@@ -159,7 +160,9 @@ class Collection:
     def choose_categories(
         self, tree: Optional[Tree] = None, seeding: str = "plusplus", seed: int = 0
     ) -> Dict[str, Any]:
-        """k, rule, scores, one_category: the CLI's default choice."""
+        """k, rule, scores, one_category: the CLI's default choice, for
+        `tree`'s cuts when given, else for k-means with `seeding` (as for
+        kmeans; spectral: at most 2000 scans)."""
     def dbscan(self, eps: float, min_points: int) -> npt.NDArray[np.int32]: ...
     def medoids(self, labels: _Labels) -> List[Tuple[int, int]]: ...
     def evaluate(self, truth: Sequence[str], labels: _Labels) -> Dict[str, Any]: ...
