@@ -46,20 +46,19 @@ fn measure(space: &Space, truth: &[String], k: usize) -> Res<SetFigures> {
     let mut cheapest = [0.0; 3];
     let mut lowest_cost = f64::INFINITY;
     let mut ratio_sum = 0.0;
-    // The true kinds' means, each from its members (the first member's
-    // centre orients the mean, as Lloyd's update does).
+    // The true kinds as groups 0..k (in sorted order).
     let mut kinds: Vec<&String> = truth.iter().collect();
     kinds.sort();
     kinds.dedup();
-    let centres = (kinds.iter())
-        .map(|kind| {
-            let members: Vec<usize> = (0..truth.len()).filter(|&i| &truth[i] == *kind).collect();
-            space
-                .mean(&members, &space.centre_of(members[0]))
-                .ok_or("a kind with no scan")
+    let groups: Vec<i32> = (truth.iter())
+        .map(|t| {
+            kinds
+                .iter()
+                .position(|&kind| kind == t)
+                .map_or(-1, |g| g as i32)
         })
-        .collect::<Result<Vec<_>, _>>()?;
-    let walk = KMeans::fit_from_centres(space, centres, ITERATIONS)?;
+        .collect();
+    let walk = KMeans::fit_from_groups(space, &groups, kinds.len(), ITERATIONS)?;
     let from_truth = evaluate(truth, &walk.labels)?.accuracy;
     for s in 0..SEEDS {
         let runs = KMeans::runs(space, &KMeansParams::new(k).seed(s).restarts(RUNS))?;

@@ -11,7 +11,7 @@
 //!     cargo run --release --example spectral_seeding_dev   # -> docs/spectral-seeding-dev.md
 
 use placecat::cluster::{KMeans, Spectral, SpectralParams};
-use placecat::distance::{Centre, Space};
+use placecat::distance::Space;
 use placecat::eval::evaluate;
 use placecat::*;
 use std::fmt::Write;
@@ -25,20 +25,6 @@ const ITERATIONS: usize = 100;
 /// Written after the run.
 const SHOWS: &str = "k-means started from spectral clustering's groups keeps their accuracy: over the 14 rows 92.0 % against spectral clustering's 91.9 % with `indoor_objects` (90.7 against 90.9 % with `indoor_searched`), 4.3 and 3.3 points above k-means++ best of 10, although it ends costlier than best of 10 of the same seed in 62.5 and 63.1 % of the runs. So Lloyd's iterations started from those groups stop at a local minimum near them, not at the cheapest grouping, as they do from the true kinds (docs/restart-count-dev.md). It differs from spectral clustering by more than a point in two of the 28 rows: lower on the office floor with `indoor_searched` (83.3 against 86.7 %), higher on the many buildings with `indoor_objects` (97.8 against 96.3 %). This look (its text written after the run) led to the plan of issue 18's twenty-first round (docs/seeds.md), which judged the seeding on fresh test seeds.";
 
-/// Each group's mean, the group's first scan orienting it as Lloyd's
-/// update does; groups numbered 0..k.
-fn means_of(space: &Space, labels: &[i32], k: usize) -> Res<Vec<Centre>> {
-    (0..k as i32)
-        .map(|g| {
-            let members: Vec<usize> = (0..labels.len()).filter(|&i| labels[i] == g).collect();
-            let first = *members.first().ok_or("an empty group")?;
-            space
-                .mean(&members, &space.centre_of(first))
-                .ok_or_else(|| "an empty group".into())
-        })
-        .collect()
-}
-
 /// Over clustering seeds 0-9 on one set: spectral clustering's accuracy,
 /// k-means from its groups' accuracy (both means), k-means++ best of 10's,
 /// and how often k-means from the spectral groups ends costlier than best
@@ -49,7 +35,7 @@ fn measure(space: &Space, truth: &[String], k: usize) -> Res<[f64; 4]> {
     let n = CLUSTER_SEEDS as f64;
     for s in 0..CLUSTER_SEEDS {
         let sp = Spectral::fit(&matrix, &SpectralParams::new(k).seed(s))?;
-        let walk = KMeans::fit_from_centres(space, means_of(space, &sp.labels, k)?, ITERATIONS)?;
+        let walk = KMeans::fit_from_groups(space, &sp.labels, k, ITERATIONS)?;
         let best = KMeans::fit(
             space,
             &placecat::cluster::KMeansParams::new(k).seed(s).restarts(10),
@@ -107,7 +93,7 @@ fn main() -> Res<()> {
         o,
         "# k-means started from spectral clustering's groups (issue 18, a development look)\n"
     )?;
-    writeln!(o, "{DEV_NOTE} Regenerate with `cargo run --release --example spectral_seeding_dev` ({:.0} s). The 14 room rows (45 scans listed in a random order, 5 kinds, k = 5), `indoor_searched` and `indoor_objects`. For each set and clustering seed 0-9: spectral clustering (`SpectralParams` defaults); k-means started from its groups' means (Lloyd's iterations on the preset's distance, at most {ITERATIONS}; `KMeans::fit_from_centres`); k-means++ best of 10 of the same seed (as the rounds); and the share of seeds where the k-means from the spectral groups ends costlier than best of 10. Means over the six seeds and ten clustering seeds.\n", t0.elapsed().as_secs_f64())?;
+    writeln!(o, "{DEV_NOTE} Regenerate with `cargo run --release --example spectral_seeding_dev` ({:.0} s). The 14 room rows (45 scans listed in a random order, 5 kinds, k = 5), `indoor_searched` and `indoor_objects`. For each set and clustering seed 0-9: spectral clustering (`SpectralParams` defaults); k-means started from its groups' means (Lloyd's iterations on the preset's distance, at most {ITERATIONS}; `KMeans::fit_from_groups`); k-means++ best of 10 of the same seed (as the rounds); and the share of seeds where the k-means from the spectral groups ends costlier than best of 10. Means over the six seeds and ten clustering seeds.\n", t0.elapsed().as_secs_f64())?;
     writeln!(o, "**What it shows** (written after the run): {SHOWS}\n")?;
     writeln!(o, "Over the 14 rows:\n")?;
     for (p, t) in totals.iter().enumerate() {

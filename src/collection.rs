@@ -410,9 +410,6 @@ impl Collection {
         params: &ChooseKParams,
     ) -> Result<Choice> {
         self.check_nonempty()?;
-        if let Method::KMeans(p) = clusterer.method() {
-            check_seeding_size(p.seeding, self.len())?;
-        }
         let all: Vec<usize> = (0..params.references).collect();
         let references = self.reference_log_w(clusterer.method(), params, &all)?;
         self.choose_categories_with(clusterer, params, &references)

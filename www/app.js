@@ -398,6 +398,7 @@ async function spectralInWorker(k, seed, mine, kmeansSeeded = false) {
   const superseded = () => mine !== clusterings || state.set !== set;
   const n = state.scans.length;
   const what = kmeansSeeded ? 'k-means with spectral seeding' : 'spectral clustering';
+  const What = what[0].toUpperCase() + what.slice(1);
   // Refused here, before the matrix is copied out for a worker, at the core's own limit
   // (without a set, the engine refuses, as for the other methods).
   if (set && n > set.spectralLimit) throw new RangeError(`${what} takes at most ${set.spectralLimit} scans (it grows with the cube of their number), got ${n}; use the tree or k-means++`);
@@ -408,7 +409,7 @@ async function spectralInWorker(k, seed, mine, kmeansSeeded = false) {
   });
   spectralTasks.add(task);
   document.body.dataset.spectral = String(spectralTasks.size);
-  view.status(`${what[0].toUpperCase()}${what.slice(1)} of ${n} ${n === 1 ? 'scan' : 'scans'} into ${k} in a worker...`);
+  view.status(`${What} of ${n} ${n === 1 ? 'scan' : 'scans'} into ${k} in a worker...`);
   try {
     const labels = await task;
     if (superseded()) return null;
@@ -417,7 +418,7 @@ async function spectralInWorker(k, seed, mine, kmeansSeeded = false) {
   } catch (e) {
     if (superseded()) return null;
     if (/** @type {Error} */ (e).message === 'cancelled') {
-      view.status(`${what[0].toUpperCase()}${what.slice(1)} cancelled; choose k or the method again to run it.`);
+      view.status(`${What} cancelled; choose k or the method again to run it.`);
       return null;
     }
     throw e;

@@ -135,6 +135,47 @@ impl KMeans {
         let run = iterate(space, &all, centres, max_iterations);
         Ok(KMeansResult::of(run, Vec::new(), 0))
     }
+
+    /// [`KMeans::fit_from_centres`] from the means of given groups:
+    /// `groups[i]` is scan i's group, 0..k, each of at least one scan (as
+    /// spectral clustering's labels, which spectral seeding starts from,
+    /// or the true kinds, to see where k-means walks from the truth).
+    pub fn fit_from_groups(
+        space: &Space,
+        groups: &[i32],
+        k: usize,
+        max_iterations: usize,
+    ) -> Result<KMeansResult> {
+        Self::fit_from_centres(space, group_means(space, groups, k)?, max_iterations)
+    }
+}
+
+/// The mean of each of the `k` groups of `groups` (scan i in group
+/// `groups[i]`), the group's first scan orienting it as Lloyd's update
+/// does. An error for a group with no scan, a label outside 0..k or a
+/// label count that is not the space's.
+fn group_means(space: &Space, groups: &[i32], k: usize) -> Result<Vec<Centre>> {
+    if groups.len() != space.len() {
+        return Err(Error::Mismatch(format!(
+            "{} group labels for {} scans",
+            groups.len(),
+            space.len()
+        )));
+    }
+    if let Some(bad) = groups.iter().find(|&&g| g < 0 || g as usize >= k) {
+        return invalid(format!("group label {bad} is not in 0..{k}"));
+    }
+    let mut members = vec![Vec::new(); k];
+    for (i, &g) in groups.iter().enumerate() {
+        members[g as usize].push(i);
+    }
+    (members.iter().enumerate())
+        .map(|(g, m)| {
+            m.first()
+                .and_then(|&first| space.mean(m, &space.centre_of(first)))
+                .ok_or_else(|| Error::InvalidParameter(format!("group {g} of {k} has no scan")))
+        })
+        .collect()
 }
 
 /// Where a k-means run starts: scans its seeding picks, or centres known
@@ -181,25 +222,9 @@ fn spectral_start(
             &own
         }
     };
+    // Spectral clustering returns k groups of at least one scan.
     let groups = Spectral::fit(matrix, &SpectralParams::new(params.k).seed(params.seed))?;
-    (0..params.k as i32)
-        .map(|g| {
-            let members: Vec<usize> = (0..groups.labels.len())
-                .filter(|&i| groups.labels[i] == g)
-                .collect();
-            // Spectral clustering returns k groups of at least one scan; the
-            // first member orients the mean as Lloyd's update does.
-            members
-                .first()
-                .and_then(|&first| space.mean(&members, &space.centre_of(first)))
-                .ok_or_else(|| {
-                    Error::InvalidParameter(format!(
-                        "spectral seeding: spectral clustering left group {g} of {} empty",
-                        params.k
-                    ))
-                })
-        })
-        .collect()
+    group_means(space, &groups.labels, params.k)
 }
 
 impl KMeansResult {
