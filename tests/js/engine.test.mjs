@@ -134,6 +134,11 @@ test('a worker clusters spectrally with the page\'s matrix: the same labels, the
     // Seed 0: as spectral clustering, one corridor scan with another kind (measured).
     if (seed === 0) assert.equal(e.evaluate(scans.map((s) => s.label), seeded).accuracy, 0.975);
   }
+  // At k 5 the two give the same labels on this demo; at k 3 they differ (measured, every
+  // seed 0-7), so there the worker is seen to run k-means, not spectral clustering.
+  const three = d.spectral(params, jsons, matrix, 3, 0, true);
+  assert.deepEqual([...three], [...e.kmeans(3, 'spectral', 0)]);
+  assert.notDeepEqual([...three], [...d.spectral(params, jsons, matrix, 3, 0)]);
   assert.throws(() => e.kmeans(5, 'spectral', 0, 2), /restarts = 2 with spectral seeding/);
   // A matrix that is not the set's is refused (spot-checked against the set's own Delta).
   const halves = new Float32Array(40 * 40).map((_, at) => {
