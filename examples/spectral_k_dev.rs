@@ -96,14 +96,7 @@ fn main() -> Res<()> {
             .iter()
             .map(|(g, r, si)| format!("{} | {} | {}", list(g), list(r), list(si)))
             .collect();
-        eprintln!(
-            "{} {}: {} ({:.0} s)",
-            f.name,
-            sensor.name(),
-            cells.join(" / "),
-            t0.elapsed().as_secs_f64()
-        );
-        table_row(&mut table, &f, sensor, &cells)?;
+        finish_row(&mut table, &f, sensor, &cells, t0)?;
     }
     let mut o = String::new();
     writeln!(o, "# Choosing the number of kinds for spectral clustering, a look (issue 18, after the nineteenth round)\n")?;

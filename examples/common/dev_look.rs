@@ -52,3 +52,18 @@ fn table_row(table: &mut String, f: &Family, sensor: Sensor, cells: &[String]) -
     use std::fmt::Write as _;
     writeln!(table, "| {}, {} | {} |", f.name, sensor.name(), cells.join(" | "))
 }
+
+/// A finished row: its cells on stderr with the seconds since `t0`, and in
+/// the report's table.
+#[allow(dead_code)] // spectral_k_dev and spectral_seeding_k_dev
+fn finish_row(
+    table: &mut String,
+    f: &Family,
+    sensor: Sensor,
+    cells: &[String],
+    t0: std::time::Instant,
+) -> std::fmt::Result {
+    let seconds = t0.elapsed().as_secs_f64();
+    eprintln!("{} {}: {} ({seconds:.0} s)", f.name, sensor.name(), cells.join(" / "));
+    table_row(table, f, sensor, cells)
+}

@@ -147,7 +147,8 @@ class Collection:
         spectral (each centre starts at the mean of one group of spectral
         clustering seeded with `seed`; one run, at most 2000 scans;
         recommended for sets of room scans described with indoor_searched or
-        indoor_objects: docs/spectral-seeding-round.md)."""
+        indoor_objects: docs/spectral-seeding-round.md; it needs k, as "auto"
+        said one category on room sets: docs/spectral-seeding-k-dev.md)."""
     def kmedoids(self, k: int, seed: int = 0) -> Dict[str, Any]: ...
     def spectral(
         self, k: int, seed: int = 0, restarts: int = 10, neighbours: int = 7

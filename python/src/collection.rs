@@ -141,7 +141,7 @@ impl PyCollection {
     /// lowest cost kept (1: the paper's single run; at most 1000; more
     /// than 1 needs random or plusplus seeding). `seeding`: plusplus,
     /// random, stride or spectral (each centre the mean of one group of
-    /// spectral clustering; at most 2000 scans). A dict: labels, k, categories, seeding, seed,
+    /// spectral clustering; at most 2000 scans; k must be given). A dict: labels, k, categories, seeding, seed,
     /// iterations, converged, cost, restarts, restart (the run kept).
     #[pyo3(signature = (k=None, seeding="plusplus", seed=0, restarts=1))]
     fn kmeans<'py>(

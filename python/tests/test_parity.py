@@ -80,6 +80,10 @@ def test_spectral_seeding_equals_the_cli(described, parity_files, tmp_path):
     assert r["cost"] != pytest.approx(c.kmeans(4, seed=3)["cost"], rel=1e-9)
     with pytest.raises(placecat.PlacecatError, match="restarts = 2 with spectral seeding"):
         c.kmeans(4, seeding="spectral", restarts=2)
+    # k is chosen from the data by default, but not for spectral seeding.
+    for k in (None, "auto"):
+        with pytest.raises(placecat.PlacecatError, match="not chosen from the data for k-means with spectral seeding"):
+            c.kmeans(k, seeding="spectral")
 
 
 def test_spectral_equals_the_cli_and_a_numpy_recomputation(described, parity_files, tmp_path):

@@ -567,6 +567,14 @@ fn simulate_describe_cluster_evaluate_round_trip() {
         ),
         (&["--method", "spectral"][..], "--method spectral needs --k"),
         (
+            &["--method", "kmeans", "--seeding", "spectral"][..],
+            "--seeding spectral needs a number for --k",
+        ),
+        (
+            &["--method", "kmeans", "--seeding", "spectral", "--k", "auto"][..],
+            "--seeding spectral needs a number for --k",
+        ),
+        (
             &["--method", "spectral", "--k", "auto"][..],
             "auto is for kmeans and hkmeans",
         ),

@@ -243,7 +243,9 @@ pub fn choose_k(
 
 /// k-means' categories of `space` at K = 1..=k_max; `matrix`, the
 /// space's Delta matrix if the caller has it (spectral seeding clusters
-/// it, computed here once otherwise).
+/// it, computed here once otherwise). [`Collection`](crate::Collection)
+/// refuses to choose K for spectral seeding; this module, for
+/// experiments, does not (docs/spectral-seeding-k-dev.md).
 fn kmeans_partitions(
     space: &Space,
     matrix: Option<&DistanceMatrix>,

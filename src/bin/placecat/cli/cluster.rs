@@ -23,8 +23,8 @@ pub struct ClusterArgs {
     #[arg(long)]
     pub method: String,
     /// kmeans, kmedoids, spectral: the number of categories; `auto`
-    /// (kmeans, the default there) chooses it from the data (see
-    /// `categories` in OUT.json).
+    /// (kmeans, the default there, but not with --seeding spectral)
+    /// chooses it from the data (see `categories` in OUT.json).
     #[arg(long)]
     pub k: Option<Count>,
     /// k-means seeding: random, stride, plusplus, spectral. Stride (the
@@ -34,7 +34,7 @@ pub struct ClusterArgs {
     /// the mean of one group of spectral clustering (--seed seeds it; one
     /// run; at most 2000 scans); recommended for sets of room scans
     /// described with indoor_searched or indoor_objects
-    /// (docs/spectral-seeding-round.md), not along a route.
+    /// (docs/spectral-seeding-round.md), not along a route; it needs --k.
     #[arg(long, default_value = "plusplus")]
     pub seeding: String,
     /// kmeans: runs of k-means, each from its own seeding, keeping the one
@@ -189,6 +189,15 @@ pub fn cluster(
             };
             let k = match a.k.unwrap_or(Count::Auto) {
                 Count::Exactly(k) => k,
+                // The library refuses it too; this names the option.
+                Count::Auto if seeding == Seeding::Spectral => {
+                    return Err(Error::InvalidParameter(
+                        "--seeding spectral needs a number for --k: auto, the default for \
+                         kmeans, is not offered with it (on room sets it said one category; \
+                         docs/spectral-seeding-k-dev.md)"
+                            .into(),
+                    ));
+                }
                 Count::Auto => {
                     let choice = set.choose_categories(
                         Clusterer::KMeans(&params(1)),
