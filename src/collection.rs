@@ -483,7 +483,9 @@ impl Collection {
 /// 5 kinds; docs/spectral-seeding-k-dev.md): the default rule named one
 /// category on every office floor, school and hospital set and the five
 /// kinds on none, as no rule tried did for spectral clustering
-/// (docs/spectral-k-dev.md), which asks for k too.
+/// (docs/spectral-k-dev.md), which asks for k too. (With k-means++ the
+/// rule fails there as well, but k-means++ is also for routes and real
+/// files, where its choice was judged; spectral seeding is for room sets.)
 fn check_choosable(method: Method) -> Result<()> {
     match method {
         Method::KMeans(p) if p.seeding == Seeding::Spectral => invalid(

@@ -47,7 +47,7 @@ fn kmeans_figures(space: &placecat::distance::Space, truth: &[String], k: usize)
 }
 
 /// A report's table row: the family and sensor, then `cells`.
-#[allow(dead_code)] // objects_dev and spectral_k_dev
+#[allow(dead_code)] // objects_dev, and finish_row
 fn table_row(table: &mut String, f: &Family, sensor: Sensor, cells: &[String]) -> std::fmt::Result {
     use std::fmt::Write as _;
     writeln!(table, "| {}, {} | {} |", f.name, sensor.name(), cells.join(" | "))

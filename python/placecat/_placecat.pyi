@@ -163,7 +163,8 @@ class Collection:
     ) -> Dict[str, Any]:
         """k, rule, scores, one_category: the CLI's default choice, for
         `tree`'s cuts when given, else for k-means with `seeding` (as for
-        kmeans; spectral: at most 2000 scans)."""
+        kmeans; refused for spectral seeding, which needs k:
+        docs/spectral-seeding-k-dev.md)."""
     def dbscan(self, eps: float, min_points: int) -> npt.NDArray[np.int32]: ...
     def medoids(self, labels: _Labels) -> List[Tuple[int, int]]: ...
     def evaluate(self, truth: Sequence[str], labels: _Labels) -> Dict[str, Any]: ...

@@ -260,8 +260,9 @@ impl PyCollection {
     }
 
     /// How many categories the scans hold, by the CLI's default rule: for
-    /// `tree`'s cuts when given, else for k-means (`seeding`, `seed`). A
-    /// dict: k, rule, scores [(K, score)], one_category.
+    /// `tree`'s cuts when given, else for k-means (`seeding`, `seed`;
+    /// refused for spectral seeding, which needs k). A dict: k, rule,
+    /// scores [(K, score)], one_category.
     #[pyo3(signature = (tree=None, seeding="plusplus", seed=0))]
     fn choose_categories<'py>(
         &mut self,

@@ -84,6 +84,9 @@ def test_spectral_seeding_equals_the_cli(described, parity_files, tmp_path):
     for k in (None, "auto"):
         with pytest.raises(placecat.PlacecatError, match="not chosen from the data for k-means with spectral seeding"):
             c.kmeans(k, seeding="spectral")
+    with pytest.raises(placecat.PlacecatError, match="not chosen from the data for k-means with spectral seeding"):
+        c.choose_categories(seeding="spectral")
+    assert c.choose_categories(tree=c.hkmeans(seed=3), seeding="spectral")["k"] >= 1
 
 
 def test_spectral_equals_the_cli_and_a_numpy_recomputation(described, parity_files, tmp_path):

@@ -239,7 +239,8 @@ impl DescriptorSet {
     }
     /// How many categories k-means should make of this set (as
     /// `chooseCategories`, for `kmeans(k, seeding, seed, restarts)`: every
-    /// K tried is clustered with the same restarts, default 1).
+    /// K tried is clustered with the same restarts, default 1). Refused
+    /// for `"spectral"` seeding, which needs k (docs/spectral-seeding-k-dev.md).
     #[wasm_bindgen(js_name = chooseK, unchecked_return_type = "Choice")]
     pub fn choose_k(
         &mut self,

@@ -157,6 +157,12 @@ fn describe_real_bytes_and_cluster_through_the_api() {
     );
     let e = message(set.choose_k("plusplus", 1.0, Some(-1.0)).err().unwrap());
     assert!(e.contains("got -1.0"), "{e}");
+    // Spectral seeding needs k (docs/spectral-seeding-k-dev.md).
+    let e = message(set.choose_k("spectral", 1.0, None).err().unwrap());
+    assert!(
+        e.contains("not chosen from the data for k-means with spectral seeding"),
+        "{e}"
+    );
     let e = message(set.hkmeans(2.0, Some(-0.0)).err().unwrap());
     assert!(e.contains("restarts must be at least 1"), "{e}");
     for huge in [2f64.powi(40), 1e300] {
