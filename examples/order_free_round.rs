@@ -553,77 +553,95 @@ fn render(dev: &Report, test: &Report) -> Res<String> {
     Ok(o)
 }
 
-fn main() -> Res<()> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.iter().any(|a| a == "--again") {
-        return again_round(&args);
-    }
-    if args.iter().any(|a| a == "--seeding") {
-        return seeding_round(&args);
-    }
-    let (dev_json, test_json) = (
-        docs().join("order-free-dev.json"),
-        docs().join("order-free.json"),
-    );
-    if args.iter().any(|a| a == "--dev") {
-        seeds::check_round_seeds(DEV_SEEDS, &[])?;
-        let r = run(DEV_SEEDS, false, Listing::Simulated)?;
-        eprintln!("{} figures the same as the listed run", same_as_listed(&r)?);
-        return write("order-free-dev.json", &serde_json::to_string_pretty(&r)?);
-    }
-    if !args.iter().any(|a| a == "--render") {
-        if !dev_json.exists() {
-            return Err("run the development seeds first (--dev)".into());
-        }
-        seeds::check_round_seeds(DEV_SEEDS, TEST_SEEDS)?;
-        if test_json.exists() {
-            return Err(
-                "docs/order-free.json exists: the test seeds were run once already (use --render)"
-                    .into(),
-            );
-        }
-        write(
-            "order-free.json",
-            &serde_json::to_string_pretty(&run(TEST_SEEDS, false, Listing::Simulated)?)?,
-        )?;
-    }
-    let dev: Report = read_json(&dev_json)?;
-    let test: Report = read_json(&test_json)?;
-    write("order-free.md", &render(&dev, &test)?)
+/// A check of a development run: how many figures it compared.
+type DevCheck = fn(&Report) -> Res<usize>;
+
+/// One round's files, seeds and methods, and how its report is checked
+/// and written: the run protocol below is the same for every round.
+struct Round {
+    /// The flag that selects it ("" for the twentieth round).
+    flag: &'static str,
+    /// docs/`stem`-dev.json, docs/`stem`.json and docs/`stem`.md.
+    stem: &'static str,
+    test_seeds: &'static [u64],
+    /// With k-means of spectral seeding.
+    seeded: bool,
+    listing: Listing,
+    /// A check of the development run against an earlier one, and what
+    /// the count it returns is of.
+    check: Option<(DevCheck, &'static str)>,
+    render: fn(&Report, &Report) -> Res<String>,
 }
 
-/// The twenty-first round: k-means with spectral seeding beside the
-/// twentieth round's methods, development seeds then its test seeds once.
-fn seeding_round(args: &[String]) -> Res<()> {
-    let (dev_json, test_json) = (
-        docs().join("spectral-seeding-round-dev.json"),
-        docs().join("spectral-seeding-round.json"),
+const ROUNDS: [Round; 3] = [
+    Round {
+        flag: "",
+        stem: "order-free",
+        test_seeds: TEST_SEEDS,
+        seeded: false,
+        listing: Listing::Simulated,
+        check: Some((same_as_listed, "the same as the listed run")),
+        render,
+    },
+    Round {
+        flag: "--seeding",
+        stem: "spectral-seeding-round",
+        test_seeds: SEEDING_TEST_SEEDS,
+        seeded: true,
+        listing: Listing::Simulated,
+        check: None,
+        render: render_seeding,
+    },
+    Round {
+        flag: "--again",
+        stem: "spectral-seeding-again",
+        test_seeds: AGAIN_TEST_SEEDS,
+        seeded: true,
+        listing: Listing::PerRow,
+        check: Some((same_as_seeding_dev, "the same as the twenty-first round's")),
+        render: render_again_pooled,
+    },
+];
+
+fn main() -> Res<()> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let has = |flag: &str| args.iter().any(|a| a == flag);
+    // The last round whose flag is given; the twentieth without one.
+    let round = (ROUNDS.iter().rev())
+        .find(|r| r.flag.is_empty() || has(r.flag))
+        .ok_or("no round")?;
+    let with = |what: &str| format!("{} {what}", round.flag).trim_start().to_string();
+    let (dev_name, test_name) = (
+        format!("{}-dev.json", round.stem),
+        format!("{}.json", round.stem),
     );
-    if args.iter().any(|a| a == "--dev") {
+    let (dev_json, test_json) = (docs().join(&dev_name), docs().join(&test_name));
+    if has("--dev") {
         seeds::check_round_seeds(DEV_SEEDS, &[])?;
-        let r = run(DEV_SEEDS, true, Listing::Simulated)?;
-        return write(
-            "spectral-seeding-round-dev.json",
-            &serde_json::to_string_pretty(&r)?,
-        );
+        let r = run(DEV_SEEDS, round.seeded, round.listing)?;
+        if let Some((check, what)) = round.check {
+            eprintln!("{} figures {what}", check(&r)?);
+        }
+        return write(&dev_name, &serde_json::to_string_pretty(&r)?);
     }
-    if !args.iter().any(|a| a == "--render") {
+    if !has("--render") {
         if !dev_json.exists() {
-            return Err("run the development seeds first (--seeding --dev)".into());
+            return Err(format!("run the development seeds first ({})", with("--dev")).into());
         }
-        seeds::check_round_seeds(DEV_SEEDS, SEEDING_TEST_SEEDS)?;
+        seeds::check_round_seeds(DEV_SEEDS, round.test_seeds)?;
         if test_json.exists() {
-            return Err("docs/spectral-seeding-round.json exists: the test seeds were run once already (use --seeding --render)".into());
+            return Err(format!(
+                "docs/{test_name} exists: the test seeds were run once already (use {})",
+                with("--render")
+            )
+            .into());
         }
-        let r = run(SEEDING_TEST_SEEDS, true, Listing::Simulated)?;
-        write(
-            "spectral-seeding-round.json",
-            &serde_json::to_string_pretty(&r)?,
-        )?;
+        let r = run(round.test_seeds, round.seeded, round.listing)?;
+        write(&test_name, &serde_json::to_string_pretty(&r)?)?;
     }
     let dev: Report = read_json(&dev_json)?;
     let test: Report = read_json(&test_json)?;
-    write("spectral-seeding-round.md", &render_seeding(&dev, &test)?)
+    write(&format!("{}.md", round.stem), &(round.render)(&dev, &test)?)
 }
 
 /// The rule of the twenty-first round on a report's room rows of
@@ -731,47 +749,11 @@ fn render_seeding(dev: &Report, test: &Report) -> Res<String> {
     Ok(o)
 }
 
-/// The twenty-second round: the twenty-first round's methods on fresh test
-/// seeds, each room row listed in its own order, and its rule read on the
-/// two samples pooled.
-fn again_round(args: &[String]) -> Res<()> {
-    let (dev_json, test_json) = (
-        docs().join("spectral-seeding-again-dev.json"),
-        docs().join("spectral-seeding-again.json"),
-    );
-    if args.iter().any(|a| a == "--dev") {
-        seeds::check_round_seeds(DEV_SEEDS, &[])?;
-        let r = run(DEV_SEEDS, true, Listing::PerRow)?;
-        eprintln!(
-            "{} figures the same as the twenty-first round's",
-            same_as_seeding_dev(&r)?
-        );
-        return write(
-            "spectral-seeding-again-dev.json",
-            &serde_json::to_string_pretty(&r)?,
-        );
-    }
-    if !args.iter().any(|a| a == "--render") {
-        if !dev_json.exists() {
-            return Err("run the development seeds first (--again --dev)".into());
-        }
-        seeds::check_round_seeds(DEV_SEEDS, AGAIN_TEST_SEEDS)?;
-        if test_json.exists() {
-            return Err("docs/spectral-seeding-again.json exists: the test seeds were run once already (use --again --render)".into());
-        }
-        let r = run(AGAIN_TEST_SEEDS, true, Listing::PerRow)?;
-        write(
-            "spectral-seeding-again.json",
-            &serde_json::to_string_pretty(&r)?,
-        )?;
-    }
-    let dev: Report = read_json(&dev_json)?;
-    let test: Report = read_json(&test_json)?;
+/// The twenty-second round's report: its rule reads its test seeds and
+/// the twenty-first round's (docs/spectral-seeding-round.json) pooled.
+fn render_again_pooled(dev: &Report, test: &Report) -> Res<String> {
     let first: Report = read_json(&docs().join("spectral-seeding-round.json"))?;
-    write(
-        "spectral-seeding-again.md",
-        &render_again(&dev, &test, &pooled(&first, &test)?)?,
-    )
+    render_again(dev, test, &pooled(&first, test)?)
 }
 
 /// Check the per-row listing against the twenty-first round's development
