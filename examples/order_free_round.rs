@@ -28,15 +28,13 @@
 //!     ... -- --again         # test seeds 531-535, once: docs/spectral-seeding-again.{json,md}
 //!     ... -- --again --render
 
-use placecat::cluster::{KMeans, KMeansParams, Seeding, Spectral, SpectralParams};
-use placecat::distance::Space;
-use placecat::DistanceMatrix;
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use std::fmt::Write;
-use std::path::{Path, PathBuf};
 
 #[path = "common/families.rs"]
 mod families;
+#[path = "common/listed_rounds.rs"]
+mod listed_rounds;
 #[path = "common/preset_rounds.rs"]
 mod preset_rounds;
 #[allow(dead_code)]
@@ -48,6 +46,7 @@ mod seeds;
 #[path = "common/site_rounds.rs"]
 mod site_rounds;
 use families::*;
+use listed_rounds::*;
 use rounds::*;
 
 /// Fixed in docs/seeds.md ("issue 18, twentieth round") before any run.
@@ -61,295 +60,6 @@ const AGAIN_TEST_SEEDS: &[u64] = &[531, 532, 533, 534, 535];
 /// which spectral seeding may be below best of 10.
 const RULE_PRESET: &str = "indoor_objects";
 const MOST_ROWS_LOWER: usize = 4;
-const ROOM_PRESETS: &[&str] = &["indoor", "indoor_searched", "indoor_objects"];
-const WAREHOUSE_PRESETS: &[&str] = &["indoor", "indoor_plus"];
-const OUTDOOR_PRESETS: &[&str] = &["outdoor", "outdoor_near"];
-/// Issue 18's targets (%): indoor kinds, warehouse halls.
-const ROOM_TARGET: f64 = 85.0;
-const HALL_TARGET: f64 = 95.0;
-
-/// One family, sensor and preset on a round's seeds: each method's figure
-/// on each seed (the randomised ones the mean over clustering or tree
-/// seeds 0-9).
-#[derive(Serialize, Deserialize, Clone)]
-struct Row {
-    family: String,
-    sensor: String,
-    preset: String,
-    rooms: bool,
-    stride: Vec<f64>,
-    best_of_10: Vec<f64>,
-    /// Hierarchical k-means++, ten trial splits a node, cut at k.
-    tree: Vec<f64>,
-    spectral: Vec<f64>,
-    nearest: Vec<f64>,
-    /// k-means with spectral seeding (the twenty-first round; empty in
-    /// the twentieth's).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    seeded: Vec<f64>,
-}
-
-/// How often, on the room sets as simulated, stride seeding's first
-/// centres (scans i·n/k) were one scan of each kind.
-#[derive(Serialize, Deserialize, Default)]
-struct StrideStarts {
-    room_sets: usize,
-    one_of_each_kind: usize,
-}
-
-#[derive(Serialize, Deserialize)]
-struct Report {
-    seeds: Vec<u64>,
-    seconds: f64,
-    rows: Vec<Row>,
-    stride_starts: StrideStarts,
-}
-
-fn mean(v: &[f64]) -> f64 {
-    v.iter().sum::<f64>() / v.len() as f64
-}
-
-impl Row {
-    /// Each method's mean over the seeds, in the table's order.
-    fn means(&self) -> [f64; 5] {
-        [
-            &self.stride,
-            &self.best_of_10,
-            &self.tree,
-            &self.spectral,
-            &self.nearest,
-        ]
-        .map(|v| mean(v))
-    }
-
-    /// The target column: rooms, stride k-means and best of 10 each at
-    /// least 85 %; the warehouse, the tree at least 95 %; outdoor none.
-    fn target(&self) -> &'static str {
-        let [stride, best, tree, ..] = self.means().map(|x| 100.0 * x);
-        let met = match (self.rooms, self.family.as_str()) {
-            (true, _) => stride >= ROOM_TARGET && best >= ROOM_TARGET,
-            (false, "warehouse") => tree >= HALL_TARGET,
-            _ => return "",
-        };
-        if met {
-            "met"
-        } else {
-            "missed"
-        }
-    }
-
-    fn cells(&self) -> Vec<String> {
-        let mut figures: Vec<String> = self.means().map(pct).to_vec();
-        if !self.seeded.is_empty() {
-            figures.insert(2, pct(mean(&self.seeded)));
-        }
-        ([&self.family, &self.sensor]
-            .map(|s| s.to_string())
-            .into_iter())
-        .chain([format!("`{}`", self.preset)])
-        .chain(figures)
-        .chain([self.target().to_string()])
-        .collect()
-    }
-}
-
-fn presets_of(f: &Family) -> &'static [&'static str] {
-    match f.name {
-        "warehouse" => WAREHOUSE_PRESETS,
-        "outdoor" => OUTDOOR_PRESETS,
-        _ => ROOM_PRESETS,
-    }
-}
-
-/// Whether stride seeding's first centres on `truth` are one scan of each
-/// of its `k` kinds.
-fn stride_starts_one_of_each(truth: &[String], k: usize) -> bool {
-    let n = truth.len();
-    let mut kinds: Vec<&String> = (0..k).map(|i| &truth[i * n / k]).collect();
-    kinds.sort();
-    kinds.dedup();
-    kinds.len() == k
-}
-
-/// Refuse a room set whose scans are still listed kind by kind (the round
-/// is about the order; a harness that lost `shuffle` must not report).
-fn check_shuffled(f: &Family, truth: &[String], kinds: usize) -> Res<()> {
-    let changes = truth.windows(2).filter(|w| w[0] != w[1]).count();
-    if changes < 2 * kinds {
-        return Err(format!(
-            "{}: only {changes} changes of kind along {} scans: not shuffled",
-            f.name,
-            truth.len()
-        )
-        .into());
-    }
-    Ok(())
-}
-
-/// k-means with spectral seeding for clustering seeds 0-9 (mean) on
-/// `space` and its Delta `matrix`, each run checked against k-means from
-/// the groups of a spectral clustering run here (the development look's
-/// way, docs/spectral-seeding-dev.md).
-fn spectral_seeding(
-    space: &Space,
-    matrix: &DistanceMatrix,
-    truth: &[String],
-    k: usize,
-) -> Res<f64> {
-    let mut sum = 0.0;
-    for s in 0..CLUSTER_SEEDS {
-        let params = KMeansParams::new(k).seeding(Seeding::Spectral).seed(s);
-        let fit = KMeans::fit_with_matrix(space, Some(matrix), &params)?;
-        let groups = Spectral::fit(matrix, &SpectralParams::new(k).seed(s))?;
-        let look = KMeans::fit_from_groups(space, &groups.labels, k, 100)?;
-        if look.labels != fit.labels {
-            return Err(
-                "spectral seeding differs from k-means from the spectral groups' means".into(),
-            );
-        }
-        sum += placecat::eval::evaluate(truth, &fit.labels)?.accuracy;
-    }
-    Ok(sum / CLUSTER_SEEDS as f64)
-}
-
-/// The RNG stream of a room row's own listing order (the twenty-second
-/// round): FNV-1a of its family and sensor, so every row of a seed draws
-/// apart, and the presets of a row share one order.
-fn row_stream(family: &str, sensor: &str) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for b in family.bytes().chain([b'/']).chain(sensor.bytes()) {
-        h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
-    }
-    h
-}
-
-/// `set` listed again in the order drawn for its row and `seed` (the
-/// twenty-second round): the simulator's shuffled order depends on the
-/// seed and the scan count alone, the same for every row of a seed.
-fn relisted(set: DescribedSet, family: &str, sensor: &str, seed: u64) -> Res<DescribedSet> {
-    use rand::seq::SliceRandom;
-    let mut order: Vec<usize> = (0..set.truth.len()).collect();
-    order.shuffle(&mut placecat::rng::rng_stream(
-        seed,
-        row_stream(family, sensor),
-    ));
-    let pick = |v: &[String]| order.iter().map(|&i| v[i].clone()).collect::<Vec<_>>();
-    let Apart::Rooms(rooms) = &set.apart else {
-        return Err(format!("{family}: only room sets are listed again").into());
-    };
-    let rooms = order.iter().map(|&i| rooms[i]).collect();
-    let presets = (set.presets.into_iter())
-        .map(|(name, params, d)| {
-            let d = order.iter().map(|&i| d[i].clone()).collect();
-            (name, params, d)
-        })
-        .collect();
-    Ok(DescribedSet {
-        truth: pick(&set.truth),
-        kinds: set.kinds,
-        scans: set.scans,
-        presets,
-        apart: Apart::Rooms(rooms),
-    })
-}
-
-/// How a round lists the room sets: as the simulator shuffles them (the
-/// twentieth and twenty-first rounds), or each row in its own order too.
-#[derive(Clone, Copy, PartialEq)]
-enum Listing {
-    Simulated,
-    PerRow,
-}
-
-fn run(seeds: &[u64], seeded: bool, listing: Listing) -> Res<Report> {
-    let t0 = std::time::Instant::now();
-    let mut rows = vec![];
-    let mut starts = StrideStarts::default();
-    for f in families().into_iter().chain([hospital_family()]) {
-        let rooms = f.scans_per_room > 1;
-        let f = Family {
-            shuffle: rooms,
-            ..f
-        };
-        let sensors: Vec<Sensor> = std::iter::once(Sensor::Own)
-            .chain(f.sensors.iter().copied())
-            .collect();
-        for sensor in sensors {
-            let presets: Vec<String> = presets_of(&f).iter().map(|p| p.to_string()).collect();
-            let mut out: Vec<Row> = (presets.iter())
-                .map(|p| Row {
-                    family: f.name.into(),
-                    sensor: sensor.name(),
-                    preset: p.clone(),
-                    rooms,
-                    stride: vec![],
-                    best_of_10: vec![],
-                    tree: vec![],
-                    spectral: vec![],
-                    nearest: vec![],
-                    seeded: vec![],
-                })
-                .collect();
-            for &seed in seeds {
-                let mut set = describe_set(&f, sensor, seed, &presets)?;
-                if rooms && listing == Listing::PerRow {
-                    set = relisted(set, f.name, &sensor.name(), seed)?;
-                }
-                let k = set.kinds;
-                if rooms {
-                    check_shuffled(&f, &set.truth, k)?;
-                    starts.room_sets += 1;
-                    starts.one_of_each_kind += stride_starts_one_of_each(&set.truth, k) as usize;
-                }
-                for (name, params, descriptors) in &set.presets {
-                    let row = (out.iter_mut())
-                        .find(|r| &r.preset == name)
-                        .ok_or("a preset described that was not asked for")?;
-                    let (figures, space, matrix, _) =
-                        preset_rounds::measure(descriptors, params, &set.truth, k)?;
-                    let spectral = spectral_over_seeds(&matrix, &set.truth, k)?;
-                    row.stride.push(figures.stride.accuracy);
-                    row.best_of_10.push(figures.best_of_10.accuracy);
-                    row.tree.push(figures.hk_trials.accuracy);
-                    row.spectral.push(spectral.accuracy);
-                    row.nearest
-                        .push(room_level_nn(&matrix, &set.truth, &set.apart));
-                    if seeded {
-                        row.seeded
-                            .push(spectral_seeding(&space, &matrix, &set.truth, k)?);
-                    }
-                }
-            }
-            for r in &out {
-                eprintln!(
-                    "{} ({:.0} s)",
-                    r.cells().join(" | "),
-                    t0.elapsed().as_secs_f64()
-                );
-            }
-            // A preset that could not describe a set (none here, but the
-            // rounds allow it) leaves its row out.
-            rows.extend(out.into_iter().filter(|r| r.stride.len() == seeds.len()));
-        }
-    }
-    Ok(Report {
-        seeds: seeds.to_vec(),
-        seconds: t0.elapsed().as_secs_f64(),
-        rows,
-        stride_starts: starts,
-    })
-}
-
-fn docs() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
-}
-
-fn write(name: &str, text: &str) -> Res<()> {
-    let path = docs().join(name);
-    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-    eprintln!("wrote docs/{name}");
-    Ok(())
-}
 
 fn table(o: &mut String, r: &Report) -> Res<()> {
     writeln!(o, "| family | sensor | preset | stride k-means | k-means++ best of 10 | hk-means++, 10 trials | spectral | room-level 1-NN | target |")?;
@@ -455,32 +165,6 @@ struct ListedRow {
     nearest: Vec<f64>,
 }
 
-/// Refuse figures of `row` that differ from the same figures in `source`
-/// (pairs of ours and theirs); returns how many were compared.
-fn equal_figures(row: &Row, source: &str, pairs: &[(&Vec<f64>, &Vec<f64>)]) -> Res<usize> {
-    let mut compared = 0;
-    for (ours, theirs) in pairs {
-        if ours.len() != theirs.len()
-            || ours
-                .iter()
-                .zip(theirs.iter())
-                .any(|(a, b)| (a - b).abs() > 1e-12)
-        {
-            return Err(format!(
-                "{} {} {}: differs from {source}",
-                row.family, row.sensor, row.preset
-            )
-            .into());
-        }
-        compared += ours.len();
-    }
-    Ok(compared)
-}
-
-/// Check that shuffling changed only the order: on the development seeds
-/// every room-level 1-NN figure (which does not depend on the order) and
-/// every route figure must equal the listed run's. Returns how many
-/// figures were compared.
 fn same_as_listed(dev: &Report) -> Res<usize> {
     let listed: ListedRun = read_json(&docs().join("spectral-dev.json"))?;
     let mut compared = 0;
@@ -603,6 +287,11 @@ const ROUNDS: [Round; 3] = [
     },
 ];
 
+/// The families of rounds 20-22: issue 18's, then the hospital floors.
+fn every_family() -> Vec<Family> {
+    families().into_iter().chain([hospital_family()]).collect()
+}
+
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let has = |flag: &str| args.iter().any(|a| a == flag);
@@ -618,7 +307,7 @@ fn main() -> Res<()> {
     let (dev_json, test_json) = (docs().join(&dev_name), docs().join(&test_name));
     if has("--dev") {
         seeds::check_round_seeds(DEV_SEEDS, &[])?;
-        let r = run(DEV_SEEDS, round.seeded, round.listing)?;
+        let r = run(every_family(), DEV_SEEDS, round.seeded, round.listing)?;
         if let Some((check, what)) = round.check {
             eprintln!("{} figures {what}", check(&r)?);
         }
@@ -636,7 +325,12 @@ fn main() -> Res<()> {
             )
             .into());
         }
-        let r = run(round.test_seeds, round.seeded, round.listing)?;
+        let r = run(
+            every_family(),
+            round.test_seeds,
+            round.seeded,
+            round.listing,
+        )?;
         write(&test_name, &serde_json::to_string_pretty(&r)?)?;
     }
     let dev: Report = read_json(&dev_json)?;
@@ -709,15 +403,6 @@ const SEEDING_NOTES: &str = "Written after the one test run (seeds 521-525, 2026
 - **Read as the earlier rounds read the target** (stride k-means and best of 10 each at least 85 %), no room row meets it with any preset: stride k-means on room sets in a random order averages 72.6 % with `indoor_objects`. Best of 10 alone reaches 85 % in 9 rows.
 - **Not along a route**, as spectral clustering: on the warehouse the tree of `indoor_plus` keeps the halls (97.6 and 98.8 %, the target met with both sensors), spectral seeding 75.7 and 78.0 %; outdoors with the paper's `outdoor` 88.0 against best of 10's 94.5 % (own sensor), with `outdoor_near` level (97.0 and 94.2 %). The docs recommend it for sets of room scans only.
 - **No preset, weight or part changed**; the defaults stay (k-means++ on the page and the CLI, the paper's presets).";
-
-fn seeding_table(o: &mut String, r: &Report) -> Res<()> {
-    writeln!(o, "| family | sensor | preset | stride k-means | k-means++ best of 10 | k-means, spectral seeding | hk-means++, 10 trials | spectral | room-level 1-NN | target |")?;
-    writeln!(o, "|---|---|---|---|---|---|---|---|---|---|")?;
-    for x in &r.rows {
-        writeln!(o, "| {} |", x.cells().join(" | "))?;
-    }
-    Ok(())
-}
 
 fn render_seeding(dev: &Report, test: &Report) -> Res<String> {
     let mut o = String::new();
