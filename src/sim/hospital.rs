@@ -12,7 +12,7 @@
 //! a trolley parked now and then.
 
 use super::geometry::{cuboid, Shape};
-use super::office_floor::FloorPlan;
+use super::office_floor::{door_anywhere, FloorPlan};
 use super::scenes::{bookcase, chair, u, Frame};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -43,6 +43,7 @@ pub const HOSPITAL: FloorPlan = FloorPlan {
     open: &["nurse_station"],
     furnish,
     fittings: corridor_fittings,
+    door: door_anywhere,
 };
 
 /// Width along the corridor of a room of a hospital kind (m), lowest and

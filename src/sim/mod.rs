@@ -17,13 +17,18 @@
 //!   descriptors were committed); `hospital`: ward floors of patient
 //!   rooms, a nurse station, treatment rooms and a day room off a corridor
 //!   with handrails ([`hospital`], written for issue 18's eighth round by
-//!   another hand).
+//!   another hand); `hotel`: floors of guest rooms with en-suite
+//!   bathrooms, a breakfast room, a lobby open to the corridor and
+//!   conference rooms ([`hotel`], written for issue 18's twenty-third
+//!   round by another hand, after the descriptors and the recommended
+//!   room setting existed).
 //!
 //! Sensors ride on a vehicle: on uneven ground they keep their height above
 //! the ground under the wheels and tilt with it (see [`terrain`]).
 
 pub mod geometry;
 pub mod hospital;
+pub mod hotel;
 pub mod lidar;
 pub mod office_floor;
 pub mod plans;
@@ -63,6 +68,9 @@ pub enum SceneKind {
     /// Hospital ward floors: corridors with handrails, patient rooms, a
     /// nurse station, treatment rooms and a day room.
     Hospital,
+    /// Hotel floors: corridors, guest rooms, a breakfast room, a lobby
+    /// and conference rooms.
+    Hotel,
 }
 
 impl std::str::FromStr for SceneKind {
@@ -75,8 +83,9 @@ impl std::str::FromStr for SceneKind {
             "office-floor" => Ok(SceneKind::OfficeFloor),
             "school" => Ok(SceneKind::School),
             "hospital" => Ok(SceneKind::Hospital),
+            "hotel" => Ok(SceneKind::Hotel),
             other => invalid(format!(
-                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital)"
+                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel)"
             )),
         }
     }
@@ -156,11 +165,17 @@ impl SimParams {
             seed,
             scans: match scene {
                 SceneKind::Indoor => 40,
-                SceneKind::OfficeFloor | SceneKind::School | SceneKind::Hospital => 24,
+                SceneKind::OfficeFloor
+                | SceneKind::School
+                | SceneKind::Hospital
+                | SceneKind::Hotel => 24,
                 _ => DEFAULT_SEQUENCE_SCANS,
             },
             scans_per_room: match scene {
-                SceneKind::OfficeFloor | SceneKind::School | SceneKind::Hospital => 3,
+                SceneKind::OfficeFloor
+                | SceneKind::School
+                | SceneKind::Hospital
+                | SceneKind::Hotel => 3,
                 _ => 5,
             },
             lidar: None,
@@ -177,6 +192,7 @@ impl SimParams {
             SceneKind::OfficeFloor => self.scans * office_floor::OFFICE_FLOOR_KINDS.len(),
             SceneKind::School => self.scans * school::SCHOOL_KINDS.len(),
             SceneKind::Hospital => self.scans * hospital::HOSPITAL_KINDS.len(),
+            SceneKind::Hotel => self.scans * hotel::HOTEL_KINDS.len(),
             _ => self.scans,
         }
     }
@@ -348,6 +364,9 @@ impl Simulation {
             }
             SceneKind::Hospital => {
                 (scenes_out, shots) = office_floor::scans(&hospital::HOSPITAL, params, &mut r);
+            }
+            SceneKind::Hotel => {
+                (scenes_out, shots) = office_floor::scans(&hotel::HOTEL, params, &mut r);
             }
         }
         let mut order: Vec<usize> = (0..shots.len()).collect();

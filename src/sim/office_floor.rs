@@ -33,8 +33,8 @@ pub const OFFICE_FLOOR_KINDS: [&str; 5] = [
 
 /// What makes a kind of floor: its kinds, their sizes, which rooms every
 /// floor has, and how rooms and the corridor are furnished. The office
-/// floor is [`OFFICE`]; [`super::school`] and [`super::hospital`] have
-/// others.
+/// floor is [`OFFICE`]; [`super::school`], [`super::hospital`] and
+/// [`super::hotel`] have others.
 pub struct FloorPlan {
     /// The scanned kinds, the corridor first.
     pub kinds: [&'static str; 5],
@@ -59,6 +59,32 @@ pub struct FloorPlan {
     pub furnish: fn(&str, [f64; 3], &mut ChaCha8Rng, &mut Vec<Shape>),
     /// Fittings of a corridor `length` long and `width` wide, `height` high.
     pub fittings: fn(f64, f64, f64, &mut ChaCha8Rng, &mut Vec<Shape>),
+    /// Where a room's door goes in its corridor wall: see [`DoorAt`].
+    pub door: DoorAt,
+}
+
+/// Where the door of a room goes, from the room's kind, its width, the
+/// door's width, whether the plan opens the room to the corridor, and the
+/// room's furniture (interior [0, w] x [0, d], the corridor wall at
+/// y = 0): the door's start along the wall from the room's start, or None
+/// for a shut door (a plain wall).
+pub type DoorAt = fn(&str, f64, f64, bool, &[Shape], &mut ChaCha8Rng) -> Option<f64>;
+
+/// The office floor's doors, and the school's and the hospital's: shut in
+/// one room of four (never in an open room), else anywhere along the wall
+/// 0.1 m from its ends, whatever stands behind it.
+pub fn door_anywhere(
+    _kind: &str,
+    width: f64,
+    door: f64,
+    open: bool,
+    _furniture: &[Shape],
+    r: &mut ChaCha8Rng,
+) -> Option<f64> {
+    if !open && r.random::<f64>() < 0.25 {
+        return None;
+    }
+    Some(u(r, 0.1, (width - door - 0.1).max(0.11)))
 }
 
 /// The office floor.
@@ -74,6 +100,7 @@ pub const OFFICE: FloorPlan = FloorPlan {
     open: &["open_plan"],
     furnish,
     fittings: corridor_fittings,
+    door: door_anywhere,
 };
 
 /// Width along the corridor of a room of an office-floor kind (m), lowest
@@ -243,7 +270,10 @@ pub fn floor(plan: &FloorPlan, r: &mut ChaCha8Rng) -> Floor {
                 .collect();
             let wall_y = if flip { -WALL } else { cw };
             let open = plan.open.contains(&kind);
-            shapes.extend(corridor_wall(kind, open, x, w, wall_y, h, r));
+            let door = door_width(kind, open, w, r);
+            let at = (plan.door)(kind, w, door, open, &local, r);
+            let gap = at.map(|a| (x + a, door));
+            shapes.extend(corridor_wall(open, x, w, wall_y, h, gap));
             if x + w < length - 1e-9 {
                 let yy = if flip { -WALL - d } else { cw + WALL };
                 shapes.push(cuboid([x + w, yy, 0.0], [WALL, d, h]));
@@ -270,27 +300,30 @@ pub fn floor(plan: &FloorPlan, r: &mut ChaCha8Rng) -> Floor {
     }
 }
 
+/// The width of a room's door: a wide opening into an `open` room, a
+/// narrower door into a closet, else 0.9 m.
+fn door_width(kind: &str, open: bool, width: f64, r: &mut ChaCha8Rng) -> f64 {
+    match kind {
+        _ if open => u(r, 2.4, 3.5),
+        "storage" => 0.8f64.min(width - 0.2),
+        _ => 0.9,
+    }
+}
+
 /// The wall between a room and the corridor, from `x` along `width`, its
-/// corridor face at `y`: a door (open in three rooms of four; `open` rooms
-/// have a wide opening instead) with a lintel above it.
+/// corridor face at `y`: a plain wall, or with a gap (its start and width)
+/// for a door (an `open` room's wide opening) with a lintel above it.
 fn corridor_wall(
-    kind: &str,
     open: bool,
     x: f64,
     width: f64,
     y: f64,
     h: f64,
-    r: &mut ChaCha8Rng,
+    gap: Option<(f64, f64)>,
 ) -> Vec<Shape> {
-    let door = match kind {
-        _ if open => u(r, 2.4, 3.5),
-        "storage" => 0.8f64.min(width - 0.2),
-        _ => 0.9,
-    };
-    if !open && r.random::<f64>() < 0.25 {
+    let Some((d0, door)) = gap else {
         return vec![cuboid([x, y, 0.0], [width, WALL, h])];
-    }
-    let d0 = x + u(r, 0.1, (width - door - 0.1).max(0.11));
+    };
     let top = if open { h - 0.3 } else { 2.1 };
     vec![
         cuboid([x, y, 0.0], [d0 - x, WALL, h]),

@@ -8,7 +8,7 @@
 //! and corridors lined with lockers.
 
 use super::geometry::{cuboid, Shape};
-use super::office_floor::FloorPlan;
+use super::office_floor::{door_anywhere, FloorPlan};
 use super::scenes::{chair, table, u, Frame};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -36,6 +36,7 @@ pub const SCHOOL: FloorPlan = FloorPlan {
     open: &["cafeteria"],
     furnish,
     fittings: lockers,
+    door: door_anywhere,
 };
 
 /// Width along the corridor of a room of a school kind (m), lowest and

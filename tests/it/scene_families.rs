@@ -1,10 +1,12 @@
 //! The scene families and sensors of the descriptor evaluation (issue 18):
 //! sensors by beam count, sensor heights, other room plans and the office,
-//! school and hospital floors, checked against geometry known in advance.
+//! school, hospital and hotel floors, checked against geometry known in
+//! advance.
 
 use crate::cli_common::{fails, placecat, succeeds, tmp};
 use placecat::sim::geometry::{Ray, Shape};
 use placecat::sim::hospital::{HOSPITAL, HOSPITAL_KINDS};
+use placecat::sim::hotel::{HOTEL, HOTEL_KINDS};
 use placecat::sim::office_floor::{self, FloorPlan, OFFICE, OFFICE_FLOOR_KINDS};
 use placecat::sim::school::{SCHOOL, SCHOOL_KINDS};
 use placecat::sim::sensors::BEAM_COUNTS;
@@ -105,8 +107,8 @@ fn nearest(shapes: &[Shape], ray: &Ray) -> f64 {
 }
 
 #[test]
-fn office_school_and_hospital_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
-    for plan in [&OFFICE, &SCHOOL, &HOSPITAL] {
+fn office_school_hospital_and_hotel_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
+    for plan in [&OFFICE, &SCHOOL, &HOSPITAL, &HOTEL] {
         for seed in 1..=4 {
             check_floor(plan, seed);
         }
@@ -143,23 +145,31 @@ fn check_floor(plan: &FloorPlan, seed: u64) {
             "seed {seed}: {} {d} m deep",
             room.kind
         );
-        // Above the doors and the furniture, below the ceiling, a ray
-        // from the room's centre meets a wall where the room ends.
+        // Above the doors and the furniture, below the ceiling, rays
+        // from the room's middle line meet a wall where the room ends:
+        // none goes past it, and one at least (the one from the centre
+        // but where a full-height partition or a column stands in the
+        // way, as a hotel's bathroom box or a lobby's column) reaches it.
         let c = [
             (room.min[0] + room.max[0]) / 2.0,
             (room.min[1] + room.max[1]) / 2.0,
             floor.height - 0.15,
         ];
-        for (dir, expect) in [
-            ([1.0, 0.0, 0.0], room.max[0] - c[0]),
-            ([-1.0, 0.0, 0.0], c[0] - room.min[0]),
-            ([0.0, 1.0, 0.0], room.max[1] - c[1]),
-            ([0.0, -1.0, 0.0], c[1] - room.min[1]),
+        let (w, d) = (width(k), depth(k));
+        for (dir, expect, across) in [
+            ([1.0, 0.0, 0.0], room.max[0] - c[0], [0.0, d]),
+            ([-1.0, 0.0, 0.0], c[0] - room.min[0], [0.0, d]),
+            ([0.0, 1.0, 0.0], room.max[1] - c[1], [w, 0.0]),
+            ([0.0, -1.0, 0.0], c[1] - room.min[1], [w, 0.0]),
         ] {
-            let t = nearest(&floor.shapes, &Ray::towards(c, dir));
+            let reach = [0.0, -0.35, -0.2, 0.2, 0.35].map(|f| {
+                let o = [c[0] + f * across[0], c[1] + f * across[1], c[2]];
+                nearest(&floor.shapes, &Ray::towards(o, dir))
+            });
+            let far = reach.iter().copied().fold(0.0, f64::max);
             assert!(
-                (t - expect).abs() < 1e-6,
-                "seed {seed}: {} {dir:?}: {t} vs {expect}",
+                (far - expect).abs() < 1e-6,
+                "seed {seed}: {} {dir:?}: {reach:?} vs {expect}",
                 room.kind
             );
         }
@@ -276,7 +286,10 @@ fn simulate_takes_a_sensor_a_height_and_the_office_floor() {
             .arg(&dir),
     );
     assert!(
-        err.contains("office-floor") && err.contains("school") && err.contains("hospital"),
+        err.contains("office-floor")
+            && err.contains("school")
+            && err.contains("hospital")
+            && err.contains("hotel"),
         "{err}"
     );
 }
@@ -332,15 +345,27 @@ fn hospital_floors_keep_the_school_defaults_and_hold_every_kind() {
 
 #[test]
 fn hospital_scans_are_labelled_counted_and_stand_in_their_rooms() {
-    let seed = 2;
+    scans_are_labelled_counted_and_stand_in_their_rooms(SceneKind::Hospital, &HOSPITAL, 2);
+}
+
+/// Four scans a kind, two a room, 16 beams, of a floor `scene` built to
+/// `plan`: labelled kind by kind, rooms numbered in order, the same for
+/// a seed and other for another, each in a room of its kind, 0.5 m from
+/// its walls, corridor scans seeing along the corridor, and most seeing
+/// the floor.
+fn scans_are_labelled_counted_and_stand_in_their_rooms(
+    scene: SceneKind,
+    plan: &FloorPlan,
+    seed: u64,
+) {
     let edit = |p: &mut SimParams| {
         p.scans = 4;
         p.scans_per_room = 2;
         p.lidar = Some(LidarParams::with_beams(16).unwrap());
     };
-    let s = sim(SceneKind::Hospital, seed, edit);
-    assert_eq!(s.len(), 4 * HOSPITAL_KINDS.len());
-    for (k, kind) in HOSPITAL_KINDS.iter().enumerate() {
+    let s = sim(scene, seed, edit);
+    assert_eq!(s.len(), 4 * plan.kinds.len());
+    for (k, kind) in plan.kinds.iter().enumerate() {
         // The kinds in order, four scans each.
         for i in 4 * k..4 * k + 4 {
             assert_eq!(s.label(i), *kind, "scan {i}");
@@ -351,8 +376,8 @@ fn hospital_scans_are_labelled_counted_and_stand_in_their_rooms() {
     assert_eq!(rooms, (0..s.len()).map(|i| i / 2).collect::<Vec<_>>());
     // The same seed gives the same plan and the same points; another
     // seed other poses.
-    let again = sim(SceneKind::Hospital, seed, edit);
-    let other = sim(SceneKind::Hospital, seed + 1, edit);
+    let again = sim(scene, seed, edit);
+    let other = sim(scene, seed + 1, edit);
     for i in 0..s.len() {
         assert_eq!(s.sensor_pose(i), again.sensor_pose(i));
         assert_eq!(s.room(i), again.room(i));
@@ -366,9 +391,7 @@ fn hospital_scans_are_labelled_counted_and_stand_in_their_rooms() {
     // the ones the simulation built: two (rooms of a kind), drawn first
     // from the seed's stream.
     let mut r = placecat::rng::rng(seed);
-    let floors: Vec<_> = (0..2)
-        .map(|_| office_floor::floor(&HOSPITAL, &mut r))
-        .collect();
+    let floors: Vec<_> = (0..2).map(|_| office_floor::floor(plan, &mut r)).collect();
     let (mut seen, mut on_floor) = (std::collections::BTreeMap::new(), 0);
     for i in 0..s.len() {
         let fi = floors
@@ -424,10 +447,10 @@ fn hospital_scans_are_labelled_counted_and_stand_in_their_rooms() {
             on_floor += 1;
         }
     }
-    assert_eq!(seen.len(), 2 * HOSPITAL_KINDS.len());
+    assert_eq!(seen.len(), 2 * plan.kinds.len());
     assert!(
         on_floor >= s.len() * 3 / 4,
-        "{on_floor} scans see the floor"
+        "{scene:?}: {on_floor} scans see the floor"
     );
 }
 
@@ -436,6 +459,76 @@ fn simulate_writes_hospital_floors() {
     let labels = simulate_floor(&tmp("hospital"), "hospital", "5", &[]);
     assert_eq!(labels.lines().count(), 1 + 2 * HOSPITAL_KINDS.len());
     for kind in HOSPITAL_KINDS {
+        assert_eq!(
+            labels
+                .lines()
+                .filter(|l| l.ends_with(&format!(",{kind}")))
+                .count(),
+            2,
+            "{kind}"
+        );
+    }
+}
+
+#[test]
+fn hotel_floors_keep_the_school_defaults_and_hold_every_kind() {
+    let p = SimParams::new(SceneKind::Hotel, 1);
+    assert_eq!((p.scans, p.scans_per_room), (24, 3));
+    assert_eq!(p.total(), 24 * HOTEL_KINDS.len());
+    assert_eq!("hotel".parse::<SceneKind>().unwrap(), SceneKind::Hotel);
+    assert_eq!(
+        serde_json::to_string(&SceneKind::Hotel).unwrap(),
+        "\"hotel\""
+    );
+    assert_eq!(HOTEL_KINDS[0], "corridor");
+    assert_eq!(HOTEL_KINDS.len(), 5);
+    for seed in 1..=6 {
+        let mut r = placecat::rng::rng(seed);
+        let floor = office_floor::floor(&HOTEL, &mut r);
+        // A ground floor: one lobby and one breakfast room, two
+        // conference rooms, guest rooms in both rows (filling them), the
+        // lobby open to the corridor.
+        let count = |kind: &str| floor.rooms.iter().filter(|r| r.kind == kind).count();
+        assert_eq!(count("lobby"), 1, "seed {seed}");
+        assert_eq!(count("breakfast_room"), 1, "seed {seed}");
+        assert_eq!(count("conference_room"), 2, "seed {seed}");
+        assert!(count("guest_room") >= 2, "seed {seed}");
+        let cw = floor.rooms[0].max[1] - floor.rooms[0].min[1];
+        assert!((1.8..=2.3).contains(&cw), "seed {seed}: corridor {cw} m");
+        assert!((2.6..=2.9).contains(&floor.height), "seed {seed}");
+        let lobby = floor.rooms.iter().find(|r| r.kind == "lobby").unwrap();
+        // The lobby's opening: a ray from the corridor into the lobby at
+        // 2.2 m, across the corridor wall somewhere along it, passes.
+        let y = floor.rooms[0].max[1] - 0.1;
+        let open = (0..200).any(|i| {
+            let x = lobby.min[0] + (lobby.max[0] - lobby.min[0]) * i as f64 / 200.0;
+            let t = nearest(&floor.shapes, &Ray::towards([x, y, 2.2], [0.0, 1.0, 0.0]));
+            t > 1.0
+        });
+        assert!(open, "seed {seed}: the lobby is shut off");
+    }
+}
+
+#[test]
+fn hotel_scans_are_labelled_counted_and_stand_in_their_rooms() {
+    scans_are_labelled_counted_and_stand_in_their_rooms(SceneKind::Hotel, &HOTEL, 2);
+    // The default counts: 24 scans a kind, kind by kind.
+    let s = sim(SceneKind::Hotel, 4, |p| {
+        p.lidar = Some(LidarParams::with_beams(16).unwrap());
+    });
+    assert_eq!(s.len(), 24 * HOTEL_KINDS.len());
+    for kind in HOTEL_KINDS {
+        assert_eq!((0..s.len()).filter(|&i| s.label(i) == kind).count(), 24);
+    }
+    let rooms: std::collections::BTreeSet<usize> = (0..s.len()).map(|i| s.room(i)).collect();
+    assert_eq!(rooms.len(), 8 * HOTEL_KINDS.len());
+}
+
+#[test]
+fn simulate_writes_hotel_floors() {
+    let labels = simulate_floor(&tmp("hotel"), "hotel", "5", &[]);
+    assert_eq!(labels.lines().count(), 1 + 2 * HOTEL_KINDS.len());
+    for kind in HOTEL_KINDS {
         assert_eq!(
             labels
                 .lines()
