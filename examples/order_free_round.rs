@@ -165,6 +165,10 @@ struct ListedRow {
     nearest: Vec<f64>,
 }
 
+/// Check that shuffling changed only the order: on the development seeds
+/// every room-level 1-NN figure (which does not depend on the order) and
+/// every route figure must equal the listed run's. Returns how many
+/// figures were compared.
 fn same_as_listed(dev: &Report) -> Res<usize> {
     let listed: ListedRun = read_json(&docs().join("spectral-dev.json"))?;
     let mut compared = 0;

@@ -138,6 +138,20 @@ pub fn hospital_family() -> Family {
     }
 }
 
+/// The hotel floors (`--scene hotel`), written for issue 18's
+/// twenty-third round by another hand after every preset and method it
+/// judges existed; run on the school's whole sensor grid. Only that
+/// round's example uses it.
+#[allow(dead_code)]
+pub fn hotel_family() -> Family {
+    Family {
+        name: "hotel (fresh)",
+        scene: SceneKind::Hotel,
+        sensors: ALL_SENSORS,
+        ..hospital_family()
+    }
+}
+
 /// The room rows of issue 18's rounds 9-16: every family with rooms (the
 /// hospital floors last) with its own sensor, then each of its others.
 #[allow(dead_code)]

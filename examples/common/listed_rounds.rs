@@ -329,10 +329,8 @@ pub fn equal_figures(row: &Row, source: &str, pairs: &[(&Vec<f64>, &Vec<f64>)]) 
     Ok(compared)
 }
 
-/// Check that shuffling changed only the order: on the development seeds
-/// every room-level 1-NN figure (which does not depend on the order) and
-/// every route figure must equal the listed run's. Returns how many
-
+/// The table of a round with k-means of spectral seeding, every row of
+/// `r` with its means.
 pub fn seeding_table(o: &mut String, r: &Report) -> Res<()> {
     writeln!(o, "| family | sensor | preset | stride k-means | k-means++ best of 10 | k-means, spectral seeding | hk-means++, 10 trials | spectral | room-level 1-NN | target |")?;
     writeln!(o, "|---|---|---|---|---|---|---|---|---|---|")?;
