@@ -88,6 +88,14 @@ fn main() -> Res<()> {
 /// how many figures were compared.
 fn same_as_again_dev(dev: &Report) -> Res<usize> {
     let earlier: Report = read_json(&docs().join(EARLIER_DEV))?;
+    if dev.seeds != earlier.seeds {
+        return Err(format!("not the seeds of docs/{EARLIER_DEV}").into());
+    }
+    let hospital = hospital_family().name;
+    let theirs = earlier.rows.iter().filter(|e| e.family == hospital).count();
+    if dev.rows.len() != theirs || dev.rows.iter().any(|r| r.family != hospital) {
+        return Err(format!("not the hospital rows of docs/{EARLIER_DEV}").into());
+    }
     let mut compared = 0;
     for r in &dev.rows {
         let e = (earlier.rows.iter())
@@ -159,6 +167,9 @@ fn rule(o: &mut String, r: &Report) -> Res<()> {
 /// The readings the plan names, on one report's rows.
 fn readings(o: &mut String, r: &Report) -> Res<()> {
     let (ours, paper) = (rows_of(r, RULE_PRESET), rows_of(r, PAPER_PRESET));
+    if ours.len() != paper.len() || ours.iter().zip(&paper).any(|(x, p)| x.sensor != p.sensor) {
+        return Err("the two presets' rows are not the same sensors".into());
+    }
     writeln!(o, "Per row, `{RULE_PRESET}`: k-means with spectral seeding against 85 %, against `{PAPER_PRESET}` with spectral seeding and against best of 10 with `{RULE_PRESET}`:\n")?;
     for (x, p) in ours.iter().zip(&paper) {
         let seeded = mean(&x.seeded);
@@ -182,10 +193,11 @@ fn readings(o: &mut String, r: &Report) -> Res<()> {
         let count = |f: fn(&Row) -> bool| rows.iter().filter(|x| f(x)).count();
         let seeded = count(|x| at_target(mean(&x.seeded)));
         let both = count(|x| at_target(mean(&x.stride)) && at_target(mean(&x.best_of_10)));
+        let stride = count(|x| at_target(mean(&x.stride)));
         let best = count(|x| at_target(mean(&x.best_of_10)));
         let spectral = count(|x| at_target(mean(&x.spectral)));
         let avg = |f: fn(&Row) -> &Vec<f64>| pct(over_rows(&rows, f));
-        writeln!(o, "- `{preset}`, {} rows at least 85 %: spectral seeding in **{seeded}**; stride k-means and best of 10 both in {both}; best of 10 in {best}; spectral clustering in {spectral}. Means over the rows: stride {}, best of 10 {}, spectral seeding {}, hk-means++ {}, spectral {}, room-level 1-NN {} %.", rows.len(), avg(|x| &x.stride), avg(|x| &x.best_of_10), avg(|x| &x.seeded), avg(|x| &x.tree), avg(|x| &x.spectral), avg(|x| &x.nearest))?;
+        writeln!(o, "- `{preset}`, rows of {} at least 85 %: with spectral seeding **{seeded}**; with stride k-means and best of 10 both {both}; stride k-means {stride}; best of 10 {best}; spectral clustering {spectral}. Means over the rows: stride {}, best of 10 {}, spectral seeding {}, hk-means++ {}, spectral {}, room-level 1-NN {} %.", rows.len(), avg(|x| &x.stride), avg(|x| &x.best_of_10), avg(|x| &x.seeded), avg(|x| &x.tree), avg(|x| &x.spectral), avg(|x| &x.nearest))?;
     }
     let s = &r.stride_starts;
     writeln!(
@@ -223,11 +235,12 @@ const NOTES: &str = "Written after the one test run (seeds 541-545, 2026-12-06 0
 
 - **By the rule fixed beforehand, the recommendation stands and `indoor_objects` carried over.** Over the six hotel rows k-means with spectral seeding averages 83.3 % with `indoor_objects`, against k-means++ best of 10's 81.6 % and the paper's `indoor` with spectral seeding at 70.9 %. `indoor_objects` is above `indoor` in every row, with every method: by 10.8 to 14.3 points with spectral seeding, 16.4 to 21.8 with room-level 1-NN, 10.4 to 18.9 with best of 10, 6.8 to 21.2 with the tree and 3.1 to 15.1 with stride k-means.
 - **Issue 18's indoor target is not met on the fresh family.** Spectral seeding with `indoor_objects` reaches 85 % in 1 of the 6 rows (the own sensor, 86.7 %); the other five lie at 80.8 to 83.7 %, and its sets at 70.9 to 93.3 %. Best of 10 reaches it in one row (64 beams, 85.8 %), stride k-means and best of 10 together in none. With `indoor_searched` spectral seeding averages 82.2 % (85 % in one row, the own sensor, 85.4 %); with `indoor` 70.9 % (none).
-- **The families the setting was chosen on flatter it by about eight points.** On the twenty-second round's 14 room rows (531-535) spectral seeding with `indoor_objects` averaged 91.5 % and reached 85 % in 13; here 83.3 % and 1 of 6. The school, written fresh in an earlier round but looked at on development seeds while `indoor_objects` was chosen, gave 87.8 to 96.8 % on its six sensors there; the hotel, on the same sensor grid, 80.8 to 86.7 %. A user with a building of a kind placecat was not developed on should expect the low eighties, not the low nineties.
-- **The descriptor, not the grouping, is the limit here too.** Room-level 1-NN with `indoor_objects` is 83.3 % over the rows (its sets 66.7 to 95.6 %), as high as spectral seeding (83.3 %) and spectral clustering (83.2 %; spectral seeding within -0.2 to +0.4 points of it a row): a scan's nearest scan from another room is of its kind no more often than the clusterings group it right. As on the hospital with 16 beams, no clustering of these distances can be expected to reach 85 % where 1-NN does not.
+- **Lower than on the families the setting was chosen on, by about eight points; one family cannot say why.** On the twenty-second round's 14 room rows (531-535) spectral seeding with `indoor_objects` averaged 91.5 % and reached 85 % in 13; here 83.3 % and 1 of 6. Like for like, the school (written fresh in an earlier round, but looked at on development seeds while `indoor_objects` was chosen) gave 87.8 to 96.8 % on the same six sensors there (92.8 % on average), the hotel 80.8 to 86.7 % (83.3 %). But the hospital, also looked at while the preset was chosen, averaged 82.7 % on its two sensors there (88.1 and 77.3 %), where the hotel gives 85.1 % (86.7 and 83.5 %). With one fresh family and five seeds, whether the earlier families flatter the setting or the hotel is a harder family cannot be told apart; what holds is that on a family placecat was not developed on it gave the low eighties.
+- **Room-level 1-NN is level with the clusterings.** With `indoor_objects` it is 83.3 % over the rows (its sets 66.7 to 95.6 %), as spectral seeding (83.3 %) and spectral clustering (83.2 %; spectral seeding within -0.2 to +0.4 points of it a row): a scan's nearest scan from another room is of its kind about as often as the clusterings group it right, as on the hospital with 16 beams. It is no ceiling row by row (with 64 beams best of 10 gives 85.8 % against 1-NN's 83.6 %; at 0.3 m the clusterings give 80.7 to 81.2 % against 78.7 %).
 - **Spectral seeding is below best of 10 in 2 of the 6 rows** (64 beams, 83.2 against 85.8 %; the sensor at 0.3 m, 80.8 against 81.2 %) and above it by 0.6 to 5.5 points in the other four.
 - **Order-free methods as before:** stride k-means averages 73.1 % with `indoor_objects` (its first centres were one scan of each kind on none of the 30 sets), the tree 73.8 %.
 - **Per seed**, over the six rows with `indoor_objects`: spectral seeding 77.7 to 86.6 %, best of 10 76.5 to 83.9 %, room-level 1-NN 74.1 to 87.4 %.
+- **Which kinds** (a diagnostic after the run, docs/hotel-kinds.md): the breakfast room (59.3 % of its scans grouped right with spectral seeding, 53.0 % by 1-NN) and the lobby (74.8 %, 86.7 %) are confused with each other and the conference room; guest rooms, corridors and conference rooms are grouped right for 91.9 to 98.5 % of their scans.
 - **Nothing in placecat changed** but the simulator's new family (and a door hook of the floor plans that keeps the other floors' scans byte-identical: the twenty-second round's development run re-ran to the same figures).";
 
 fn render(dev: &Report, test: &Report) -> Res<String> {

@@ -211,20 +211,6 @@ fn one_set(f: &Family, sensor: Sensor, seed: u64) -> Res<SetOut> {
     })
 }
 
-/// Room-level 1-NN's table: true kind x the kind of the scan's nearest
-/// neighbour, with `room_level_nn`'s exclusion and order of equals (the last
-/// column, "unassigned", for a scan with no allowed neighbour).
-fn nearest_kinds(m: &DistanceMatrix, kind: &[usize], k: usize, apart: &Apart) -> Counts {
-    let mut c = vec![vec![0; k + 1]; k];
-    for i in 0..m.n {
-        let nearest = (0..m.n)
-            .filter(|&j| j != i && apart.allows(i, j))
-            .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)));
-        c[kind[i]][nearest.map_or(k, |j| kind[j])] += 1;
-    }
-    c
-}
-
 /// The centre k-means would hold for each group: `Space::mean` repeated to
 /// a fixed point (each member's candidate alignment depends on the centre),
 /// started at the member with the least Delta to the others.

@@ -123,6 +123,25 @@ pub fn room_level_nn(m: &DistanceMatrix, truth: &[String], apart: &Apart) -> f64
     hits as f64 / m.n as f64
 }
 
+/// Room-level 1-NN as a table: for each scan, by its true kind (`kind`,
+/// 0..k), the kind of its nearest allowed neighbour (column k: none).
+#[allow(dead_code)] // the kind diagnostics (kinds_dev.rs, hotel_kinds_look.rs)
+pub fn nearest_kinds(
+    m: &DistanceMatrix,
+    kind: &[usize],
+    k: usize,
+    apart: &Apart,
+) -> Vec<Vec<usize>> {
+    let mut c = vec![vec![0; k + 1]; k];
+    for i in 0..m.n {
+        let nearest = (0..m.n)
+            .filter(|&j| j != i && apart.allows(i, j))
+            .min_by(|&a, &b| m.get(i, a).total_cmp(&m.get(i, b)));
+        c[kind[i]][nearest.map_or(k, |j| kind[j])] += 1;
+    }
+    c
+}
+
 #[allow(dead_code)] // the tenth round (floor.rs) calls describe_set_with alone
 pub fn describe_set(
     f: &Family,
