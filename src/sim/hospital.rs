@@ -44,6 +44,7 @@ pub const HOSPITAL: FloorPlan = FloorPlan {
     furnish,
     fittings: corridor_fittings,
     door: door_anywhere,
+    glazed: &[],
 };
 
 /// Width along the corridor of a room of a hospital kind (m), lowest and

@@ -56,6 +56,7 @@ pub const HOTEL: FloorPlan = FloorPlan {
     furnish,
     fittings: corridor_fittings,
     door,
+    glazed: &[],
 };
 
 /// Width along the corridor of a room of a hotel kind (m), lowest and
@@ -108,13 +109,25 @@ fn door(
     if r.random::<f64>() < shut {
         return None;
     }
-    let spans = clear_spans(width, furniture);
+    door_in_clear_span(width, door, DOORWAY, furniture, r)
+}
+
+/// Where a door `door` wide goes along a wall `width` long: uniform over
+/// every place where nothing stands within `depth` of the wall, anywhere
+/// along it if nowhere is. (Also the mall's shop entrances.)
+pub(super) fn door_in_clear_span(
+    width: f64,
+    door: f64,
+    depth: f64,
+    furniture: &[Shape],
+    r: &mut ChaCha8Rng,
+) -> Option<f64> {
+    let spans = clear_spans(width, depth, furniture);
     let slack = |(a, b): (f64, f64)| (b - a - door).max(0.0);
     let room: f64 = spans.iter().copied().map(slack).sum();
     if room <= 0.0 {
         return Some(u(r, 0.1, (width - door - 0.1).max(0.11)));
     }
-    // Uniform over every place the door fits.
     let mut t = r.random::<f64>() * room;
     for &span in &spans {
         if t <= slack(span) {
@@ -126,12 +139,12 @@ fn door(
 }
 
 /// The stretches of a room's corridor wall, `width` long, 0.1 m from its
-/// ends, that no furniture stands in front of within [`DOORWAY`] of it.
-fn clear_spans(width: f64, furniture: &[Shape]) -> Vec<(f64, f64)> {
+/// ends, that no furniture stands in front of within `depth` of it.
+fn clear_spans(width: f64, depth: f64, furniture: &[Shape]) -> Vec<(f64, f64)> {
     let mut blocked: Vec<(f64, f64)> = furniture
         .iter()
         .map(footprint)
-        .filter(|(lo, _)| lo[1] < DOORWAY)
+        .filter(|(lo, _)| lo[1] < depth)
         .map(|(lo, hi)| (lo[0] - 0.05, hi[0] + 0.05))
         .collect();
     blocked.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -148,7 +161,7 @@ fn clear_spans(width: f64, furniture: &[Shape]) -> Vec<(f64, f64)> {
 }
 
 /// The lowest and highest x and y of a shape's footprint.
-fn footprint(s: &Shape) -> ([f64; 2], [f64; 2]) {
+pub(super) fn footprint(s: &Shape) -> ([f64; 2], [f64; 2]) {
     match *s {
         Shape::Cuboid { min, max } => ([min[0], min[1]], [max[0], max[1]]),
         Shape::Cylinder { centre, radius, .. } => (
@@ -484,7 +497,7 @@ fn sofa(s: &mut Vec<Shape>, f: &Frame, len: f64) {
 
 /// A dining chair centred on `f`, facing local +x: four legs, an
 /// upholstered seat at 0.46 m, a back to 0.86-0.95 m.
-fn dining_chair(s: &mut Vec<Shape>, r: &mut ChaCha8Rng, f: &Frame) {
+pub(super) fn dining_chair(s: &mut Vec<Shape>, r: &mut ChaCha8Rng, f: &Frame) {
     for (a, b) in [(-0.2, -0.2), (-0.2, 0.2), (0.2, -0.2), (0.2, 0.2)] {
         f.part(s, [a, b], [0.03, 0.03], 0.0, 0.41);
     }
@@ -493,7 +506,7 @@ fn dining_chair(s: &mut Vec<Shape>, r: &mut ChaCha8Rng, f: &Frame) {
 }
 
 /// A four-legged table of `size` centred on `f`, its top at 0.75 m.
-fn dining_table(s: &mut Vec<Shape>, f: &Frame, size: [f64; 2]) {
+pub(super) fn dining_table(s: &mut Vec<Shape>, f: &Frame, size: [f64; 2]) {
     f.part(s, [0.0, 0.0], size, 0.72, 0.03);
     let [a, b] = [size[0] / 2.0 - 0.05, size[1] / 2.0 - 0.05];
     for (x, y) in [(-a, -b), (-a, b), (a, -b), (a, b)] {
@@ -502,7 +515,7 @@ fn dining_table(s: &mut Vec<Shape>, f: &Frame, size: [f64; 2]) {
 }
 
 /// A round pedestal table of `radius` at `c`, its top at `h`.
-fn round_table(s: &mut Vec<Shape>, c: [f64; 2], radius: f64, h: f64) {
+pub(super) fn round_table(s: &mut Vec<Shape>, c: [f64; 2], radius: f64, h: f64) {
     for (radius, z0, z1) in [
         (radius.min(0.25), 0.0, 0.03),
         (0.04, 0.03, h - 0.03),

@@ -21,7 +21,10 @@
 //!   bathrooms, a breakfast room, a lobby open to the corridor and
 //!   conference rooms ([`hotel`], written for issue 18's twenty-third
 //!   round by another hand, after the descriptors and the recommended
-//!   room setting existed).
+//!   room setting existed); `mall`: shopping-mall floors of clothing
+//!   stores, cafés, a supermarket and an electronics store behind glazed
+//!   shopfronts off a wide concourse ([`mall`], written for issue 18's
+//!   twenty-fourth round by another hand, likewise).
 //!
 //! Sensors ride on a vehicle: on uneven ground they keep their height above
 //! the ground under the wheels and tilt with it (see [`terrain`]).
@@ -30,6 +33,7 @@ pub mod geometry;
 pub mod hospital;
 pub mod hotel;
 pub mod lidar;
+pub mod mall;
 pub mod office_floor;
 pub mod plans;
 pub mod route;
@@ -71,6 +75,9 @@ pub enum SceneKind {
     /// Hotel floors: corridors, guest rooms, a breakfast room, a lobby
     /// and conference rooms.
     Hotel,
+    /// Shopping-mall floors: a concourse, clothing stores, cafés, a
+    /// supermarket and an electronics store.
+    Mall,
 }
 
 impl std::str::FromStr for SceneKind {
@@ -84,8 +91,9 @@ impl std::str::FromStr for SceneKind {
             "school" => Ok(SceneKind::School),
             "hospital" => Ok(SceneKind::Hospital),
             "hotel" => Ok(SceneKind::Hotel),
+            "mall" => Ok(SceneKind::Mall),
             other => invalid(format!(
-                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel)"
+                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel, mall)"
             )),
         }
     }
@@ -168,14 +176,16 @@ impl SimParams {
                 SceneKind::OfficeFloor
                 | SceneKind::School
                 | SceneKind::Hospital
-                | SceneKind::Hotel => 24,
+                | SceneKind::Hotel
+                | SceneKind::Mall => 24,
                 _ => DEFAULT_SEQUENCE_SCANS,
             },
             scans_per_room: match scene {
                 SceneKind::OfficeFloor
                 | SceneKind::School
                 | SceneKind::Hospital
-                | SceneKind::Hotel => 3,
+                | SceneKind::Hotel
+                | SceneKind::Mall => 3,
                 _ => 5,
             },
             lidar: None,
@@ -193,6 +203,7 @@ impl SimParams {
             SceneKind::School => self.scans * school::SCHOOL_KINDS.len(),
             SceneKind::Hospital => self.scans * hospital::HOSPITAL_KINDS.len(),
             SceneKind::Hotel => self.scans * hotel::HOTEL_KINDS.len(),
+            SceneKind::Mall => self.scans * mall::MALL_KINDS.len(),
             _ => self.scans,
         }
     }
@@ -367,6 +378,9 @@ impl Simulation {
             }
             SceneKind::Hotel => {
                 (scenes_out, shots) = office_floor::scans(&hotel::HOTEL, params, &mut r);
+            }
+            SceneKind::Mall => {
+                (scenes_out, shots) = office_floor::scans(&mall::MALL, params, &mut r);
             }
         }
         let mut order: Vec<usize> = (0..shots.len()).collect();

@@ -33,8 +33,8 @@ pub const OFFICE_FLOOR_KINDS: [&str; 5] = [
 
 /// What makes a kind of floor: its kinds, their sizes, which rooms every
 /// floor has, and how rooms and the corridor are furnished. The office
-/// floor is [`OFFICE`]; [`super::school`], [`super::hospital`] and
-/// [`super::hotel`] have others.
+/// floor is [`OFFICE`]; [`super::school`], [`super::hospital`],
+/// [`super::hotel`] and [`super::mall`] have others.
 pub struct FloorPlan {
     /// The scanned kinds, the corridor first.
     pub kinds: [&'static str; 5],
@@ -61,6 +61,11 @@ pub struct FloorPlan {
     pub fittings: fn(f64, f64, f64, &mut ChaCha8Rng, &mut Vec<Shape>),
     /// Where a room's door goes in its corridor wall: see [`DoorAt`].
     pub door: DoorAt,
+    /// Kinds whose corridor wall is a glazed shopfront: a low base,
+    /// mullions and a fascia, the glass itself not modelled (a lidar sees
+    /// mostly through it), the door or opening left clear under the
+    /// fascia.
+    pub glazed: &'static [&'static str],
 }
 
 /// Where the door of a room goes, from the room's kind, its width, the
@@ -101,6 +106,7 @@ pub const OFFICE: FloorPlan = FloorPlan {
     furnish,
     fittings: corridor_fittings,
     door: door_anywhere,
+    glazed: &[],
 };
 
 /// Width along the corridor of a room of an office-floor kind (m), lowest
@@ -273,7 +279,11 @@ pub fn floor(plan: &FloorPlan, r: &mut ChaCha8Rng) -> Floor {
             let door = door_width(kind, open, w, r);
             let at = (plan.door)(kind, w, door, open, &local, r);
             let gap = at.map(|a| (x + a, door));
-            shapes.extend(corridor_wall(open, x, w, wall_y, h, gap));
+            if plan.glazed.contains(&kind) {
+                shapes.extend(shopfront(x, w, wall_y, h, gap));
+            } else {
+                shapes.extend(corridor_wall(open, x, w, wall_y, h, gap));
+            }
             if x + w < length - 1e-9 {
                 let yy = if flip { -WALL - d } else { cw + WALL };
                 shapes.push(cuboid([x + w, yy, 0.0], [WALL, d, h]));
@@ -333,6 +343,32 @@ fn corridor_wall(
         ),
         cuboid([d0, y, top], [door, WALL, h - top]),
     ]
+}
+
+/// A glazed shopfront from `x` along `width`, its corridor face at `y`:
+/// a base 0.3 m high, a mullion at the ends of each glazed stretch and
+/// every 1.5 m or less along it, a fascia over the whole front from 3 m
+/// (0.6 m under a lower ceiling) up, and the entrance (`gap`, its start
+/// and width) open under the fascia. The glass panes are left out.
+fn shopfront(x: f64, width: f64, y: f64, h: f64, gap: Option<(f64, f64)>) -> Vec<Shape> {
+    let fascia = (h - 0.6).clamp(2.1, 3.0);
+    let mut s = vec![cuboid([x, y, fascia], [width, WALL, h - fascia])];
+    let stretches = match gap {
+        Some((d0, door)) => vec![(x, d0), (d0 + door, x + width)],
+        None => vec![(x, x + width)],
+    };
+    for (a, b) in stretches {
+        if b - a < 0.06 {
+            continue;
+        }
+        s.push(cuboid([a, y, 0.0], [b - a, WALL, 0.3]));
+        let n = ((b - a) / 1.5).ceil().max(1.0) as usize;
+        for i in 0..=n {
+            let m = (a + (b - a) * i as f64 / n as f64 - 0.03).clamp(a, b - 0.06);
+            s.push(cuboid([m, y, 0.3], [0.06, WALL, fascia - 0.3]));
+        }
+    }
+    s
 }
 
 /// Furniture of a room of `kind` whose interior is [0, w] x [0, d], the

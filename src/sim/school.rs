@@ -37,6 +37,7 @@ pub const SCHOOL: FloorPlan = FloorPlan {
     furnish,
     fittings: lockers,
     door: door_anywhere,
+    glazed: &[],
 };
 
 /// Width along the corridor of a room of a school kind (m), lowest and

@@ -1,12 +1,13 @@
 //! The scene families and sensors of the descriptor evaluation (issue 18):
 //! sensors by beam count, sensor heights, other room plans and the office,
-//! school, hospital and hotel floors, checked against geometry known in
+//! school, hospital, hotel and mall floors, checked against geometry known in
 //! advance.
 
 use crate::cli_common::{fails, placecat, succeeds, tmp};
 use placecat::sim::geometry::{Ray, Shape};
 use placecat::sim::hospital::{HOSPITAL, HOSPITAL_KINDS};
 use placecat::sim::hotel::{HOTEL, HOTEL_KINDS};
+use placecat::sim::mall::{MALL, MALL_KINDS};
 use placecat::sim::office_floor::{self, FloorPlan, OFFICE, OFFICE_FLOOR_KINDS};
 use placecat::sim::school::{SCHOOL, SCHOOL_KINDS};
 use placecat::sim::sensors::BEAM_COUNTS;
@@ -289,7 +290,8 @@ fn simulate_takes_a_sensor_a_height_and_the_office_floor() {
         err.contains("office-floor")
             && err.contains("school")
             && err.contains("hospital")
-            && err.contains("hotel"),
+            && err.contains("hotel")
+            && err.contains("mall"),
         "{err}"
     );
 }
@@ -431,7 +433,11 @@ fn scans_are_labelled_counted_and_stand_in_their_rooms(
             .fold(0.0, f64::max);
         if s.label(i) == "corridor" {
             let end = x.max(floors[fi].rooms[0].max[0] - x);
-            assert!(far > 0.9 * end && end > 5.0, "scan {i}: {far} of {end} m");
+            assert!(
+                far > 0.9 * end && end > 5.0,
+                "scan {i}: {far} of {end} m at {x} {y}: {:?}",
+                floors[fi].rooms[0]
+            );
         }
         // Nothing below the floor; 16 beams (+-15 degrees) meet it 4-5 m
         // out, which furniture hides from a few spots.
@@ -509,19 +515,24 @@ fn hotel_floors_keep_the_school_defaults_and_hold_every_kind() {
     }
 }
 
+/// A floor's default counts (16 beams, seed 4): 24 scans a kind, in
+/// rooms of 3 (8 rooms a kind).
+fn default_counts(scene: SceneKind, kinds: &[&str]) {
+    let s = sim(scene, 4, |p| {
+        p.lidar = Some(LidarParams::with_beams(16).unwrap());
+    });
+    assert_eq!(s.len(), 24 * kinds.len());
+    for kind in kinds {
+        assert_eq!((0..s.len()).filter(|&i| s.label(i) == *kind).count(), 24);
+    }
+    let rooms: std::collections::BTreeSet<usize> = (0..s.len()).map(|i| s.room(i)).collect();
+    assert_eq!(rooms.len(), 8 * kinds.len());
+}
+
 #[test]
 fn hotel_scans_are_labelled_counted_and_stand_in_their_rooms() {
     scans_are_labelled_counted_and_stand_in_their_rooms(SceneKind::Hotel, &HOTEL, 2);
-    // The default counts: 24 scans a kind, kind by kind.
-    let s = sim(SceneKind::Hotel, 4, |p| {
-        p.lidar = Some(LidarParams::with_beams(16).unwrap());
-    });
-    assert_eq!(s.len(), 24 * HOTEL_KINDS.len());
-    for kind in HOTEL_KINDS {
-        assert_eq!((0..s.len()).filter(|&i| s.label(i) == kind).count(), 24);
-    }
-    let rooms: std::collections::BTreeSet<usize> = (0..s.len()).map(|i| s.room(i)).collect();
-    assert_eq!(rooms.len(), 8 * HOTEL_KINDS.len());
+    default_counts(SceneKind::Hotel, &HOTEL_KINDS);
 }
 
 #[test]
@@ -537,5 +548,106 @@ fn simulate_writes_hotel_floors() {
             2,
             "{kind}"
         );
+    }
+}
+
+#[test]
+fn mall_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
+    for seed in 1..=4 {
+        check_floor(&MALL, seed);
+    }
+}
+
+#[test]
+fn mall_floors_keep_the_school_defaults_and_hold_every_kind() {
+    let p = SimParams::new(SceneKind::Mall, 1);
+    assert_eq!((p.scans, p.scans_per_room), (24, 3));
+    assert_eq!(p.total(), 24 * MALL_KINDS.len());
+    assert_eq!("mall".parse::<SceneKind>().unwrap(), SceneKind::Mall);
+    assert_eq!(serde_json::to_string(&SceneKind::Mall).unwrap(), "\"mall\"");
+    assert_eq!(MALL_KINDS[0], "corridor");
+    assert_eq!(MALL_KINDS.len(), 5);
+    for seed in 1..=6 {
+        let mut r = placecat::rng::rng(seed);
+        let floor = office_floor::floor(&MALL, &mut r);
+        // One supermarket, one electronics store, two cafés, clothing
+        // stores in both rows (filling them); a wide concourse, a high
+        // ceiling.
+        let count = |kind: &str| floor.rooms.iter().filter(|r| r.kind == kind).count();
+        assert_eq!(count("supermarket"), 1, "seed {seed}");
+        assert_eq!(count("electronics_store"), 1, "seed {seed}");
+        assert_eq!(count("cafe"), 2, "seed {seed}");
+        assert!(count("clothing_store") >= 2, "seed {seed}");
+        let cw = floor.rooms[0].max[1] - floor.rooms[0].min[1];
+        assert!((5.0..=8.0).contains(&cw), "seed {seed}: concourse {cw} m");
+        assert!((3.5..=4.5).contains(&floor.height), "seed {seed}");
+        // Every shop's front is glazed: from the concourse, level rays at
+        // 1.5 m pass into the shop through most of its front (between
+        // the mullions) and through its entrance; at 0.15 m the base
+        // stops them but for the entrance, 2.4-3.5 m wide; at 3.3 m the
+        // fascia stops every one.
+        for shop in floor
+            .rooms
+            .iter()
+            .filter(|r| r.kind != "corridor" && r.kind != "storage")
+        {
+            let north = shop.min[1] > 0.0;
+            let (y, dir) = if north {
+                (floor.rooms[0].max[1] - 0.1, [0.0, 1.0, 0.0])
+            } else {
+                (0.1, [0.0, -1.0, 0.0])
+            };
+            let n = 400;
+            let through = |z: f64| {
+                (0..n)
+                    .filter(|&i| {
+                        let x =
+                            shop.min[0] + (shop.max[0] - shop.min[0]) * (i as f64 + 0.5) / n as f64;
+                        nearest(&floor.shapes, &Ray::towards([x, y, z], dir)) > 0.5
+                    })
+                    .count() as f64
+                    / n as f64
+            };
+            let w = shop.max[0] - shop.min[0];
+            let (glass, base, fascia) = (through(1.5), through(0.15), through(3.3));
+            assert!(
+                glass > 0.9,
+                "seed {seed}: {} {glass} seen through",
+                shop.kind
+            );
+            let open = base * w;
+            assert!(
+                (2.3..=3.6).contains(&open),
+                "seed {seed}: {} entrance {open} m",
+                shop.kind
+            );
+            assert_eq!(fascia, 0.0, "seed {seed}: {}", shop.kind);
+        }
+    }
+}
+
+#[test]
+fn mall_scans_are_labelled_counted_and_stand_in_their_rooms() {
+    scans_are_labelled_counted_and_stand_in_their_rooms(SceneKind::Mall, &MALL, 2);
+    default_counts(SceneKind::Mall, &MALL_KINDS);
+}
+
+#[test]
+fn simulate_writes_mall_floors() {
+    let dir = tmp("mall");
+    let labels = simulate_floor(&dir, "mall", "5", &[]);
+    assert_eq!(labels.lines().count(), 1 + 2 * MALL_KINDS.len());
+    for kind in MALL_KINDS {
+        assert_eq!(
+            labels
+                .lines()
+                .filter(|l| l.ends_with(&format!(",{kind}")))
+                .count(),
+            2,
+            "{kind}"
+        );
+    }
+    for i in 0..2 * MALL_KINDS.len() {
+        assert!(dir.join(format!("scan_{i:05}.ply")).is_file(), "scan {i}");
     }
 }
