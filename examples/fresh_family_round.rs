@@ -311,14 +311,13 @@ fn render(dev: &Report, test: &Report) -> Res<String> {
     readings(&mut o, test)?;
     writeln!(o, "\nRegenerate with `cargo run --release --example fresh_family_round -- --dev` (`fresh-family-dev.json`, {:.0} s) then `cargo run --release --example fresh_family_round` (test seeds, this file and `fresh-family.json`, {:.0} s; it refuses to run again once `fresh-family.json` exists; `-- --render` renders this file from them). The hotel with its own sensor, 16, 32 and 64 beams, and the sensor at 0.3 m and 1.8 m; 45 scans a set (5 kinds, rooms of 3 scans), each set listed in a random order of its own (drawn from its seed, family and sensor, as in the twenty-second round, docs/spectral-seeding-again.md); k the true number of kinds. Stride k-means runs once; k-means++ best of 10, k-means with spectral seeding and spectral clustering with clustering seeds 0-9, hk-means++ (ten trial splits a node, cut at k) with tree seeds 0-9 (means). Room-level 1-NN: no neighbour from the scan's own room. Target column: stride k-means and best of 10 each at least 85 % (as the earlier rounds read issue 18's target).\n", dev.seconds, test.seconds)?;
     writeln!(o, "## What it shows\n\n{NOTES}\n")?;
-    writeln!(o, "## 1. Test seeds {test_seeds}\n")?;
-    seeding_table(&mut o, test)?;
-    writeln!(o, "\n## 2. Every test set, `{RULE_PRESET}` (spectral seeding / best of 10 / stride k-means, %)\n")?;
-    per_set(&mut o, test, RULE_PRESET)?;
-    writeln!(o, "\n## 3. Development seeds 1-6, the hospital's rows (run first, to check the harness; they decide nothing)\n")?;
-    let compared = same_as_again_dev(dev)?;
-    writeln!(o, "**Check.** Every figure equals the twenty-second round's development run on the same rows (docs/{EARLIER_DEV}; {compared} figures, checked each time this file is rendered), so this example runs the rounds' harness unchanged.\n")?;
-    seeding_table(&mut o, dev)?;
+    sections(
+        &mut o,
+        dev,
+        test,
+        &test_seeds,
+        ", so this example runs the rounds' harness unchanged",
+    )?;
     Ok(o)
 }
 
@@ -370,13 +369,26 @@ fn render_mall(dev: &Report, test: &Report) -> Res<String> {
     readings(&mut o, &pooled)?;
     writeln!(o, "\nRegenerate with `cargo run --release --example fresh_family_round -- --mall --dev` (`fresh-family-2-dev.json`, {:.0} s) then `cargo run --release --example fresh_family_round -- --mall` (test seeds, this file and `fresh-family-2.json`, {:.0} s; it refuses to run again once `fresh-family-2.json` exists; `-- --mall --render` renders this file from them and docs/fresh-family.json). Rows, presets, methods and listing as docs/fresh-family.md.\n", dev.seconds, test.seconds)?;
     writeln!(o, "## What it shows\n\n{MALL_NOTES}\n")?;
+    sections(&mut o, dev, test, &test_seeds, "")?;
+    Ok(o)
+}
+
+/// A round's report after its notes: the test table, every test set of
+/// [`RULE_PRESET`], and the development run with its check (`check_tail`
+/// ends the check's sentence).
+fn sections(
+    o: &mut String,
+    dev: &Report,
+    test: &Report,
+    test_seeds: &str,
+    check_tail: &str,
+) -> Res<()> {
     writeln!(o, "## 1. Test seeds {test_seeds}\n")?;
-    seeding_table(&mut o, test)?;
+    seeding_table(o, test)?;
     writeln!(o, "\n## 2. Every test set, `{RULE_PRESET}` (spectral seeding / best of 10 / stride k-means, %)\n")?;
-    per_set(&mut o, test, RULE_PRESET)?;
+    per_set(o, test, RULE_PRESET)?;
     writeln!(o, "\n## 3. Development seeds 1-6, the hospital's rows (run first, to check the harness; they decide nothing)\n")?;
     let compared = same_as_again_dev(dev)?;
-    writeln!(o, "**Check.** Every figure equals the twenty-second round's development run on the same rows (docs/{EARLIER_DEV}; {compared} figures, checked each time this file is rendered).\n")?;
-    seeding_table(&mut o, dev)?;
-    Ok(o)
+    writeln!(o, "**Check.** Every figure equals the twenty-second round's development run on the same rows (docs/{EARLIER_DEV}; {compared} figures, checked each time this file is rendered){check_tail}.\n")?;
+    seeding_table(o, dev)
 }
