@@ -17,17 +17,22 @@
 //!   1 each (every term the same share);
 //! - `huang`: the variable weighting of W-k-means (Huang, Ng, Rong and Li,
 //!   "Automated variable weighting in k-means type clustering", IEEE TPAMI
-//!   2005) on the median-scaled terms, with beta = 2: group the scans
+//!   2005) with beta = 2, on the median-scaled terms: group the scans
 //!   (k-means with spectral seeding, clustering seed 0), measure each
-//!   term's dispersion within the groups (mean distance of two scans of a
-//!   group over the mean distance of any two scans), weigh each term by
-//!   the inverse of its dispersion, again until the groups stop changing
-//!   (at most 10 times);
-//! - `huang_preset`: the same, the preset's weights times the inverse
-//!   dispersions (normalised to a mean factor of 1);
-//! - `oracle`, `oracle_preset`: as `huang` and `huang_preset` with the true
-//!   kinds as the groups: an upper bound on what a weighting by dispersion
-//!   can do, not a method.
+//!   term's dispersion D within the groups, weigh it by lambda^beta with
+//!   lambda proportional to 1 / D (Huang's update for beta = 2), so by
+//!   1 / D^2, and again until the groups stop changing (at most 10 times).
+//!   D is the mean distance of two scans of one group over the mean
+//!   distance of any two scans: by pairs, not to the group's centre as
+//!   Huang measures it, since these terms are compared by pairs;
+//! - `huang_preset`: the same loop on the preset's weights, each times its
+//!   factor 1 / D^2 (the factors normalised to a mean of 1);
+//! - `inverse_preset`: as `huang_preset` with the factor 1 / D (a first
+//!   run of this look used it and called it Huang's; it is not);
+//! - `truth_huang_preset`, `truth_inverse_preset`: the two rules on the
+//!   preset's weights with D measured within the true kinds, once. They
+//!   read the truth, so they are no method; they are not a bound either
+//!   (another weighting may do better).
 //!
 //! Figures per set: k-means with spectral seeding (clustering seeds 0-2,
 //! mean), k-means++ best of 10 (seed 0), room-level 1-NN.
@@ -52,14 +57,18 @@ use rounds::*;
 use weight_search::*;
 
 const PRESET: &str = "indoor_objects";
-const NAMES: [&str; 6] = [
+const NAMES: [&str; 7] = [
     "preset",
     "median",
     "huang",
     "huang_preset",
-    "oracle",
-    "oracle_preset",
+    "inverse_preset",
+    "truth_huang_preset",
+    "truth_inverse_preset",
 ];
+/// Huang's weight lambda^beta with beta = 2 and lambda proportional to
+/// 1 / D: a term's factor D^-2.
+const HUANG: i32 = 2;
 const ITERATIONS: usize = 10;
 
 fn space_of(s: &Set, w: &Weights) -> placecat::Result<Space> {
@@ -115,14 +124,14 @@ fn dispersions(terms: &[DistanceMatrix], groups: &[i32]) -> Vec<f64> {
         .collect()
 }
 
-/// Weights over the terms `on`: `base[t]` times the inverse dispersion
-/// (normalised to a mean factor of 1).
-fn reweighted(on: &[usize], base: &[f64], disp: &[f64]) -> Weights {
-    let inv: Vec<f64> = disp.iter().map(|d| 1.0 / d).collect();
-    let mean = inv.iter().sum::<f64>() / inv.len() as f64;
+/// Weights over the terms `on`: `base[t]` times its factor D^-`power`
+/// (the factors normalised to a mean of 1).
+fn reweighted(on: &[usize], base: &[f64], disp: &[f64], power: i32) -> Weights {
+    let factor: Vec<f64> = disp.iter().map(|d| d.powi(-power)).collect();
+    let mean = factor.iter().sum::<f64>() / factor.len() as f64;
     let mut w = [0f32; WEIGHTS];
     for (t, &c) in on.iter().enumerate() {
-        w[c] = (base[t] * inv[t] / mean) as f32;
+        w[c] = (base[t] * factor[t] / mean) as f32;
     }
     w
 }
@@ -136,21 +145,22 @@ fn spectral_labels(s: &Set, w: &Weights, seed: u64) -> placecat::Result<Vec<i32>
     Ok(KMeans::fit_with_matrix(&sp, Some(&m), &p)?.labels)
 }
 
-/// W-k-means' loop from `base` weights on the terms; the groups from the
-/// truth (`truth` given) or from k-means with spectral seeding.
+/// W-k-means' loop from `base` weights on the terms, each term's factor
+/// D^-`power`; with `truth`, D within the true kinds, once.
 fn dispersion_weights(
     s: &Set,
     on: &[usize],
     terms: &[DistanceMatrix],
     base: &[f64],
+    power: i32,
     truth: Option<&[i32]>,
 ) -> placecat::Result<Weights> {
+    if let Some(t) = truth {
+        return Ok(reweighted(on, base, &dispersions(terms, t), power));
+    }
     let mut w = [0f32; WEIGHTS];
     for (t, &c) in on.iter().enumerate() {
         w[c] = base[t] as f32;
-    }
-    if let Some(t) = truth {
-        return Ok(reweighted(on, base, &dispersions(terms, t)));
     }
     let mut last: Option<Vec<i32>> = None;
     for _ in 0..ITERATIONS {
@@ -158,7 +168,7 @@ fn dispersion_weights(
         if last.as_ref() == Some(&labels) {
             return Ok(w);
         }
-        w = reweighted(on, base, &dispersions(terms, &labels));
+        w = reweighted(on, base, &dispersions(terms, &labels), power);
         last = Some(labels);
     }
     Ok(w)
@@ -218,10 +228,11 @@ fn look(rows: &[(Family, Sensor)], seeds: &[u64], t0: std::time::Instant) -> Res
                 let weightings = [
                     preset,
                     median_w,
-                    dispersion_weights(&s, &on, &terms, &med, None)?,
-                    dispersion_weights(&s, &on, &terms, &pre, None)?,
-                    dispersion_weights(&s, &on, &terms, &med, Some(&truth))?,
-                    dispersion_weights(&s, &on, &terms, &pre, Some(&truth))?,
+                    dispersion_weights(&s, &on, &terms, &med, HUANG, None)?,
+                    dispersion_weights(&s, &on, &terms, &pre, HUANG, None)?,
+                    dispersion_weights(&s, &on, &terms, &pre, 1, None)?,
+                    dispersion_weights(&s, &on, &terms, &pre, HUANG, Some(&truth))?,
+                    dispersion_weights(&s, &on, &terms, &pre, 1, Some(&truth))?,
                 ];
                 let figures = (weightings.iter())
                     .map(|w| figures(&s, w))
@@ -298,12 +309,7 @@ fn main() -> Res<()> {
     let t0 = std::time::Instant::now();
     let fresh_rows: Vec<(Family, Sensor)> = [hotel_family(), mall_family()]
         .into_iter()
-        .flat_map(|f| {
-            let sensors: Vec<Sensor> = std::iter::once(Sensor::Own)
-                .chain(f.sensors.iter().copied())
-                .collect();
-            sensors.into_iter().map(move |s| (f.clone(), s))
-        })
+        .flat_map(sensor_rows)
         .collect();
     let fresh = look(&fresh_rows, seeds, t0)?;
     let earlier = look(&families::room_rows(), seeds, t0)?;
@@ -339,12 +345,5 @@ fn main() -> Res<()> {
         }
         o.push('\n');
     }
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/part-weights-dev.md");
-    std::fs::write(&path, o)?;
-    eprintln!(
-        "wrote {} ({:.0} s)",
-        path.display(),
-        t0.elapsed().as_secs_f64()
-    );
-    Ok(())
+    write_doc("part-weights-dev.md", &o, t0)
 }

@@ -170,12 +170,15 @@ pub fn mall_family() -> Family {
 pub fn room_rows() -> Vec<(Family, Sensor)> {
     (families().into_iter().chain([hospital_family()]))
         .filter(|f| f.scans_per_room > 1)
-        .flat_map(|f| {
-            let sensors: Vec<Sensor> = std::iter::once(Sensor::Own)
-                .chain(f.sensors.iter().copied())
-                .collect();
-            sensors.into_iter().map(move |s| (f.clone(), s))
-        })
+        .flat_map(sensor_rows)
+        .collect()
+}
+
+/// A family's rows: with its own sensor, then each of its others.
+#[allow(dead_code)]
+pub fn sensor_rows(f: Family) -> Vec<(Family, Sensor)> {
+    (std::iter::once(Sensor::Own).chain(f.sensors.iter().copied()))
+        .map(|s| (f.clone(), s))
         .collect()
 }
 
