@@ -24,12 +24,16 @@
 //!   room setting existed); `mall`: shopping-mall floors of clothing
 //!   stores, cafés, a supermarket and an electronics store behind glazed
 //!   shopfronts off a wide concourse ([`mall`], written for issue 18's
-//!   twenty-fourth round by another hand, likewise).
+//!   twenty-fourth round by another hand, likewise); `home`: apartment
+//!   building floors of living rooms, kitchens, bedrooms and bathrooms
+//!   off a shared corridor ([`home`], written for issue 18's twenty-fifth
+//!   round by another hand, likewise).
 //!
 //! Sensors ride on a vehicle: on uneven ground they keep their height above
 //! the ground under the wheels and tilt with it (see [`terrain`]).
 
 pub mod geometry;
+pub mod home;
 pub mod hospital;
 pub mod hotel;
 pub mod lidar;
@@ -78,6 +82,9 @@ pub enum SceneKind {
     /// Shopping-mall floors: a concourse, clothing stores, cafés, a
     /// supermarket and an electronics store.
     Mall,
+    /// Residential floors: a shared corridor, living rooms, kitchens,
+    /// bedrooms and bathrooms.
+    Home,
 }
 
 impl std::str::FromStr for SceneKind {
@@ -92,8 +99,9 @@ impl std::str::FromStr for SceneKind {
             "hospital" => Ok(SceneKind::Hospital),
             "hotel" => Ok(SceneKind::Hotel),
             "mall" => Ok(SceneKind::Mall),
+            "home" => Ok(SceneKind::Home),
             other => invalid(format!(
-                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel, mall)"
+                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel, mall, home)"
             )),
         }
     }
@@ -177,7 +185,8 @@ impl SimParams {
                 | SceneKind::School
                 | SceneKind::Hospital
                 | SceneKind::Hotel
-                | SceneKind::Mall => 24,
+                | SceneKind::Mall
+                | SceneKind::Home => 24,
                 _ => DEFAULT_SEQUENCE_SCANS,
             },
             scans_per_room: match scene {
@@ -185,7 +194,8 @@ impl SimParams {
                 | SceneKind::School
                 | SceneKind::Hospital
                 | SceneKind::Hotel
-                | SceneKind::Mall => 3,
+                | SceneKind::Mall
+                | SceneKind::Home => 3,
                 _ => 5,
             },
             lidar: None,
@@ -204,6 +214,7 @@ impl SimParams {
             SceneKind::Hospital => self.scans * hospital::HOSPITAL_KINDS.len(),
             SceneKind::Hotel => self.scans * hotel::HOTEL_KINDS.len(),
             SceneKind::Mall => self.scans * mall::MALL_KINDS.len(),
+            SceneKind::Home => self.scans * home::HOME_KINDS.len(),
             _ => self.scans,
         }
     }
@@ -381,6 +392,9 @@ impl Simulation {
             }
             SceneKind::Mall => {
                 (scenes_out, shots) = office_floor::scans(&mall::MALL, params, &mut r);
+            }
+            SceneKind::Home => {
+                (scenes_out, shots) = office_floor::scans(&home::HOME, params, &mut r);
             }
         }
         let mut order: Vec<usize> = (0..shots.len()).collect();
