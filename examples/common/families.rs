@@ -164,6 +164,18 @@ pub fn mall_family() -> Family {
     }
 }
 
+/// The residential floors (`--scene home`), written for issue 18's
+/// twenty-fifth round by another hand after the twenty-fourth round's
+/// figures, on the hotel's sensor grid. Only that round's example uses it.
+#[allow(dead_code)]
+pub fn home_family() -> Family {
+    Family {
+        name: "home (fresh)",
+        scene: SceneKind::Home,
+        ..hotel_family()
+    }
+}
+
 /// The room rows of issue 18's rounds 9-16: every family with rooms (the
 /// hospital floors last) with its own sensor, then each of its others.
 #[allow(dead_code)]
