@@ -226,7 +226,7 @@ pub const PRESET_NOTES: [(&str, &str); 14] = [
     ),
     (
         "indoor_objects",
-        "indoor_searched plus the objects part (what stands in the room, object by object: footprints, tops, roundness, number): room kinds; above indoor_searched on office floors and on schools and wards seen with their own sensor, below it on schools seen with 16 to 64 beams (docs/room-objects.md); its kinds group best by spectral clustering (docs/spectral.md); on hotel and mall floors written after it, 83 and 64 % with spectral seeding (docs/fresh-family.md, docs/fresh-family-2.md)",
+        "indoor_searched plus the objects part (what stands in the room, object by object: footprints, tops, roundness, number): room kinds; above indoor_searched on office floors and on schools and wards seen with their own sensor, below it on schools seen with 16 to 64 beams (docs/room-objects.md); its kinds group best by spectral clustering (docs/spectral.md); on hotel, mall and home floors written after it, 83, 64 and 76 % with spectral seeding (docs/fresh-family.md, docs/fresh-family-2.md, docs/fresh-family-3.md)",
     ),
 ];
 
