@@ -144,5 +144,6 @@ fn main() -> Res<()> {
         }
         o.push('\n');
     }
-    write_doc("near-crop-dev.md", &o, t0)
+    eprintln!("{:.0} s", t0.elapsed().as_secs_f64());
+    write("near-crop-dev.md", &o)
 }

@@ -136,13 +136,15 @@ fn reweighted(on: &[usize], base: &[f64], disp: &[f64], power: i32) -> Weights {
     w
 }
 
-fn spectral_labels(s: &Set, w: &Weights, seed: u64) -> placecat::Result<Vec<i32>> {
-    let sp = space_of(s, w)?;
-    let m = sp.matrix();
-    let p = KMeansParams::new(s.kinds)
-        .seeding(Seeding::Spectral)
-        .seed(seed);
-    Ok(KMeans::fit_with_matrix(&sp, Some(&m), &p)?.labels)
+/// k-means with spectral seeding on a weighting's space and its matrix.
+fn spectral_labels(
+    sp: &Space,
+    m: &DistanceMatrix,
+    k: usize,
+    seed: u64,
+) -> placecat::Result<Vec<i32>> {
+    let p = KMeansParams::new(k).seeding(Seeding::Spectral).seed(seed);
+    Ok(KMeans::fit_with_matrix(sp, Some(m), &p)?.labels)
 }
 
 /// W-k-means' loop from `base` weights on the terms, each term's factor
@@ -164,7 +166,8 @@ fn dispersion_weights(
     }
     let mut last: Option<Vec<i32>> = None;
     for _ in 0..ITERATIONS {
-        let labels = spectral_labels(s, &w, 0)?;
+        let sp = space_of(s, &w)?;
+        let labels = spectral_labels(&sp, &sp.matrix(), s.kinds, 0)?;
         if last.as_ref() == Some(&labels) {
             return Ok(w);
         }
@@ -180,7 +183,7 @@ fn figures(s: &Set, w: &Weights) -> placecat::Result<[f64; 3]> {
     let acc = |l: &[i32]| placecat::eval::evaluate(&s.truth, l).map(|e| e.accuracy);
     let mut spec = 0.0;
     for seed in 0..3 {
-        spec += acc(&spectral_labels(s, w, seed)?)? / 3.0;
+        spec += acc(&spectral_labels(&sp, &m, s.kinds, seed)?)? / 3.0;
     }
     let best = KMeans::fit(&sp, &KMeansParams::new(s.kinds).seed(0).restarts(10))?;
     Ok([
@@ -345,5 +348,6 @@ fn main() -> Res<()> {
         }
         o.push('\n');
     }
-    write_doc("part-weights-dev.md", &o, t0)
+    eprintln!("{:.0} s", t0.elapsed().as_secs_f64());
+    write("part-weights-dev.md", &o)
 }

@@ -12,7 +12,6 @@ use placecat::distance::Space;
 use placecat::DistanceMatrix;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
-use std::path::{Path, PathBuf};
 
 pub const ROOM_PRESETS: &[&str] = &["indoor", "indoor_searched", "indoor_objects"];
 pub const WAREHOUSE_PRESETS: &[&str] = &["indoor", "indoor_plus"];
@@ -294,17 +293,6 @@ pub fn run(families: Vec<Family>, seeds: &[u64], seeded: bool, listing: Listing)
         rows,
         stride_starts: starts,
     })
-}
-
-pub fn docs() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
-}
-
-pub fn write(name: &str, text: &str) -> Res<()> {
-    let path = docs().join(name);
-    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-    eprintln!("wrote docs/{name}");
-    Ok(())
 }
 
 /// Refuse figures of `row` that differ from the same figures in `source`

@@ -387,13 +387,17 @@ pub fn each_row<S>(
     Ok(())
 }
 
-/// Write docs/`name` and say so with the run's time.
-#[allow(dead_code)] // the development looks after the twenty-fourth round
-pub fn write_doc(name: &str, text: &str, t0: std::time::Instant) -> Res<()> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("docs")
-        .join(name);
+/// The repository's docs folder.
+#[allow(dead_code)]
+pub fn docs() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs")
+}
+
+/// Write docs/`name` and say so.
+#[allow(dead_code)]
+pub fn write(name: &str, text: &str) -> Res<()> {
+    let path = docs().join(name);
     std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-    eprintln!("wrote docs/{name} ({:.0} s)", t0.elapsed().as_secs_f64());
+    eprintln!("wrote docs/{name}");
     Ok(())
 }

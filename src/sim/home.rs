@@ -631,44 +631,12 @@ fn corridor_fittings(length: f64, width: f64, h: f64, r: &mut ChaCha8Rng, s: &mu
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The footprint and the lowest and highest point of a shape.
-    fn extent(s: &Shape) -> ([f64; 2], [f64; 2], f64, f64) {
-        let (lo, hi) = crate::sim::hotel::footprint(s);
-        let (z0, z1) = match *s {
-            Shape::Cuboid { min, max } => (min[2], max[2]),
-            Shape::OrientedBox { centre, half, .. } => (centre[2] - half[2], centre[2] + half[2]),
-            Shape::Cylinder { z0, z1, .. } => (z0, z1),
-            Shape::Sphere { centre, radius } => (centre[2] - radius, centre[2] + radius),
-        };
-        (lo, hi, z0, z1)
-    }
-
-    fn overlap(a: ([f64; 2], [f64; 2]), b: ([f64; 2], [f64; 2])) -> bool {
-        (0..2).all(|k| a.0[k] < b.1[k] - 1e-9 && b.0[k] < a.1[k] - 1e-9)
-    }
+    use crate::sim::hotel::{extent, overlap};
+    use crate::sim::office_floor::{boxes, furnished_room};
 
     /// A room of `kind` of a size drawn from the plan's ranges.
     fn room(kind: &str, r: &mut ChaCha8Rng) -> ([f64; 3], Vec<Shape>) {
-        let (wl, wh) = room_width(kind);
-        let size = [
-            u(r, wl, wh),
-            u(r, HOME.row_depth.0, HOME.row_depth.1),
-            u(r, HOME.ceiling.0, HOME.ceiling.1),
-        ];
-        let mut s = Vec::new();
-        furnish(kind, size, r, &mut s);
-        (size, s)
-    }
-
-    /// The axis-aligned boxes of `s`: lowest and highest corners.
-    fn boxes(s: &[Shape]) -> Vec<([f64; 3], [f64; 3])> {
-        s.iter()
-            .filter_map(|s| match *s {
-                Shape::Cuboid { min, max } => Some((min, max)),
-                _ => None,
-            })
-            .collect()
+        furnished_room(&HOME, kind, r)
     }
 
     fn size(b: &([f64; 3], [f64; 3])) -> [f64; 3] {

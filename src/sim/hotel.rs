@@ -191,6 +191,26 @@ pub(super) fn footprint(s: &Shape) -> ([f64; 2], [f64; 2]) {
     }
 }
 
+/// A shape's footprint and its lowest and highest point (the floor
+/// families' fixture tests).
+#[cfg(test)]
+pub(super) fn extent(s: &Shape) -> ([f64; 2], [f64; 2], f64, f64) {
+    let (lo, hi) = footprint(s);
+    let (z0, z1) = match *s {
+        Shape::Cuboid { min, max } => (min[2], max[2]),
+        Shape::OrientedBox { centre, half, .. } => (centre[2] - half[2], centre[2] + half[2]),
+        Shape::Cylinder { z0, z1, .. } => (z0, z1),
+        Shape::Sphere { centre, radius } => (centre[2] - radius, centre[2] + radius),
+    };
+    (lo, hi, z0, z1)
+}
+
+/// Whether two footprints overlap by more than a rounding error.
+#[cfg(test)]
+pub(super) fn overlap(a: ([f64; 2], [f64; 2]), b: ([f64; 2], [f64; 2])) -> bool {
+    (0..2).all(|k| a.0[k] < b.1[k] - 1e-9 && b.0[k] < a.1[k] - 1e-9)
+}
+
 /// A guest room, laid out with its bathroom on the x = 0 side, then
 /// mirrored in about one room of two (each room by its own coin flip):
 /// the bathroom box against the corridor
@@ -1014,23 +1034,6 @@ fn housekeeping_cart(s: &mut Vec<Shape>, f: &Frame, len: f64, depth: f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The footprint's corners (or its bounding square) and the lowest
-    /// and highest point of a shape.
-    fn extent(s: &Shape) -> ([f64; 2], [f64; 2], f64, f64) {
-        let (lo, hi) = footprint(s);
-        let (z0, z1) = match *s {
-            Shape::Cuboid { min, max } => (min[2], max[2]),
-            Shape::OrientedBox { centre, half, .. } => (centre[2] - half[2], centre[2] + half[2]),
-            Shape::Cylinder { z0, z1, .. } => (z0, z1),
-            Shape::Sphere { centre, radius } => (centre[2] - radius, centre[2] + radius),
-        };
-        (lo, hi, z0, z1)
-    }
-
-    fn overlap(a: ([f64; 2], [f64; 2]), b: ([f64; 2], [f64; 2])) -> bool {
-        (0..2).all(|k| a.0[k] < b.1[k] - 1e-9 && b.0[k] < a.1[k] - 1e-9)
-    }
 
     #[test]
     fn furniture_stands_inside_its_room_on_the_floor_and_under_the_ceiling() {

@@ -590,3 +590,33 @@ fn free_spot(room: &FloorRoom, r: &mut ChaCha8Rng) -> [f64; 2] {
     let [x, y] = free_position(&local, r, 0.5);
     [x + room.min[0], y + room.min[1]]
 }
+
+/// A room of `kind` of a size drawn from `plan`'s ranges, furnished as
+/// the plan furnishes it (the floor families' fixture tests).
+#[cfg(test)]
+pub(super) fn furnished_room(
+    plan: &FloorPlan,
+    kind: &str,
+    r: &mut ChaCha8Rng,
+) -> ([f64; 3], Vec<Shape>) {
+    let (wl, wh) = (plan.width)(kind);
+    let size = [
+        u(r, wl, wh),
+        u(r, plan.row_depth.0, plan.row_depth.1),
+        u(r, plan.ceiling.0, plan.ceiling.1),
+    ];
+    let mut s = Vec::new();
+    (plan.furnish)(kind, size, r, &mut s);
+    (size, s)
+}
+
+/// The axis-aligned boxes of `s`: lowest and highest corners.
+#[cfg(test)]
+pub(super) fn boxes(s: &[Shape]) -> Vec<([f64; 3], [f64; 3])> {
+    s.iter()
+        .filter_map(|s| match *s {
+            Shape::Cuboid { min, max } => Some((min, max)),
+            _ => None,
+        })
+        .collect()
+}

@@ -462,11 +462,13 @@ fn scans_are_labelled_counted_and_stand_in_their_rooms(
     );
 }
 
-#[test]
-fn simulate_writes_hospital_floors() {
-    let labels = simulate_floor(&tmp("hospital"), "hospital", "5", &[]);
-    assert_eq!(labels.lines().count(), 1 + 2 * HOSPITAL_KINDS.len());
-    for kind in HOSPITAL_KINDS {
+/// `placecat simulate --scene SCENE --seed 5` with two scans a kind: its
+/// labels hold two scans of each of `kinds`. Returns the output folder.
+fn writes_two_scans_of_each_kind(scene: &str, kinds: &[&str]) -> std::path::PathBuf {
+    let dir = tmp(scene);
+    let labels = simulate_floor(&dir, scene, "5", &[]);
+    assert_eq!(labels.lines().count(), 1 + 2 * kinds.len());
+    for kind in kinds {
         assert_eq!(
             labels
                 .lines()
@@ -476,6 +478,12 @@ fn simulate_writes_hospital_floors() {
             "{kind}"
         );
     }
+    dir
+}
+
+#[test]
+fn simulate_writes_hospital_floors() {
+    writes_two_scans_of_each_kind("hospital", &HOSPITAL_KINDS);
 }
 
 #[test]
@@ -539,18 +547,7 @@ fn hotel_scans_are_labelled_counted_and_stand_in_their_rooms() {
 
 #[test]
 fn simulate_writes_hotel_floors() {
-    let labels = simulate_floor(&tmp("hotel"), "hotel", "5", &[]);
-    assert_eq!(labels.lines().count(), 1 + 2 * HOTEL_KINDS.len());
-    for kind in HOTEL_KINDS {
-        assert_eq!(
-            labels
-                .lines()
-                .filter(|l| l.ends_with(&format!(",{kind}")))
-                .count(),
-            2,
-            "{kind}"
-        );
-    }
+    writes_two_scans_of_each_kind("hotel", &HOTEL_KINDS);
 }
 
 #[test]
@@ -636,19 +633,7 @@ fn mall_scans_are_labelled_counted_and_stand_in_their_rooms() {
 
 #[test]
 fn simulate_writes_mall_floors() {
-    let dir = tmp("mall");
-    let labels = simulate_floor(&dir, "mall", "5", &[]);
-    assert_eq!(labels.lines().count(), 1 + 2 * MALL_KINDS.len());
-    for kind in MALL_KINDS {
-        assert_eq!(
-            labels
-                .lines()
-                .filter(|l| l.ends_with(&format!(",{kind}")))
-                .count(),
-            2,
-            "{kind}"
-        );
-    }
+    let dir = writes_two_scans_of_each_kind("mall", &MALL_KINDS);
     for i in 0..2 * MALL_KINDS.len() {
         assert!(dir.join(format!("scan_{i:05}.ply")).is_file(), "scan {i}");
     }
@@ -710,19 +695,7 @@ fn home_scans_are_labelled_counted_and_stand_in_their_rooms() {
 
 #[test]
 fn simulate_writes_home_floors() {
-    let dir = tmp("home");
-    let labels = simulate_floor(&dir, "home", "5", &[]);
-    assert_eq!(labels.lines().count(), 1 + 2 * HOME_KINDS.len());
-    for kind in HOME_KINDS {
-        assert_eq!(
-            labels
-                .lines()
-                .filter(|l| l.ends_with(&format!(",{kind}")))
-                .count(),
-            2,
-            "{kind}"
-        );
-    }
+    let dir = writes_two_scans_of_each_kind("home", &HOME_KINDS);
     for i in 0..2 * HOME_KINDS.len() {
         assert!(dir.join(format!("scan_{i:05}.ply")).is_file(), "scan {i}");
     }
