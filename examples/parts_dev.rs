@@ -170,9 +170,10 @@ fn main() -> Res<()> {
             "--only" => only = it.next().cloned(),
             w => {
                 let v: Vec<f32> = w.split(',').map(str::parse).collect::<Result<_, _>>()?;
-                weights.push(v.try_into().map_err(|_| {
-                    "ten weights: ndt,height_range,slice,esf,ring,clutter,m2dp,columns,iron,objects"
-                })?);
+                if v.len() < 10 || v.len() > WEIGHTS {
+                    return Err("ten to twelve weights: ndt,height_range,slice,esf,ring,clutter,m2dp,columns,iron,objects[,object_types,object_layout] (the last two 0 if left out)".into());
+                }
+                weights.push(padded(&v));
             }
         }
     }
@@ -181,14 +182,17 @@ fn main() -> Res<()> {
         return Err(format!("seed {s} is a test seed, not for development (docs/seeds.md)").into());
     }
     if weights.is_empty() {
-        weights = vec![
+        weights = [
             [1., 0., 0., 0., 0., 0., 0., 0., 0., 0.],
             [1., 0., 5., 5., 5., 0., 0., 0., 0., 0.],
             [1., 0., 0., 0., 0., 5., 0., 0., 0., 0.],
             [1., 0., 5., 5., 5., 5., 0., 0., 0., 0.],
             [1., 0., 5., 0., 5., 5., 0., 0., 0., 0.],
             [0., 0., 0., 0., 0., 10., 0., 0., 0., 0.],
-        ];
+        ]
+        .iter()
+        .map(|w| padded(w))
+        .collect();
     }
     for &seed in &seeds {
         let mut sets = Vec::new();
@@ -281,4 +285,11 @@ fn main() -> Res<()> {
         }
     }
     Ok(())
+}
+
+/// Weights given for the first kinds, the later kinds at 0.
+fn padded(given: &[f32]) -> [f32; WEIGHTS] {
+    let mut w = [0f32; WEIGHTS];
+    w[..given.len()].copy_from_slice(given);
+    w
 }

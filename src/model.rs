@@ -72,8 +72,9 @@ pub struct ScaledWeights {
 /// Part weights as a model file holds them: one per part kind of the
 /// version that wrote it. A model written before `iron` was added lists
 /// seven (the only count written before; the median scale came after
-/// `columns`), one written before `objects` eight; the kinds added since
-/// weigh 0 in it. Any other count is an error.
+/// `columns`), one written before `objects` eight, one written before
+/// `object_types` and `object_layout` (added together) nine; the kinds
+/// added since weigh 0 in it. Any other count is an error.
 fn part_weights_of_any_version<'de, D: serde::Deserializer<'de>>(
     d: D,
 ) -> std::result::Result<[f32; MAX_PARTS], D::Error> {

@@ -155,7 +155,7 @@ def test_sensor_height_is_kept_checked_and_not_mixed(room):
     assert given.params["sensor_height"] == 1.2
     estimated = placecat.describe(room, "indoor_columns")
     assert "sensor_height" not in estimated.params
-    for bad, pattern in [(0, "sensor_height must be above 0"), (1.2, "read only by the clutter, columns and objects parts")]:
+    for bad, pattern in [(0, "sensor_height must be above 0"), (1.2, "read only by the clutter, columns, objects, object_types and object_layout parts")]:
         preset = "indoor_columns" if bad == 0 else "indoor"
         with pytest.raises(placecat.PlacecatError, match=pattern):
             placecat.describe(room, {"preset": preset, "sensor_height": bad})

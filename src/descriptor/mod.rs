@@ -2,7 +2,8 @@
 //! points -> [`ndt_grid`] -> [`shape`] classes -> [`alignment`] candidates ->
 //! [`histogram`] matrices; and optional extra [`parts`] beside it (issue
 //! 18): [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`], [`m2dp`], [`columns`], [`iron`], [`objects`].
+//! [`clutter`], [`m2dp`], [`columns`], [`iron`], [`objects`], [`object_types`],
+//! [`object_layout`].
 
 pub mod alignment;
 pub mod clutter;
@@ -14,6 +15,8 @@ pub mod histogram;
 pub mod iron;
 pub mod m2dp;
 pub mod ndt_grid;
+pub mod object_layout;
+pub mod object_types;
 pub mod objects;
 pub mod params;
 pub mod parts;

@@ -76,13 +76,11 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
 
 /// The part of a scan whose ranges and azimuths are known.
 pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
-    let Some((floor, ceiling)) = scan.floor_and_ceiling() else {
+    let Some(Contents { pieces, seen }) = contents_of(scan) else {
         return empty_channels(&CHANNELS);
     };
-    let (tops, seen) = contents(scan, floor, ceiling);
-    let objects = objects(&tops);
-    // Every object's cells were seen, so `seen` > 0 past this.
-    if objects.is_empty() {
+    // Every piece's cells were seen, so `seen` > 0 past this.
+    if pieces.is_empty() {
         return empty_channels(&CHANNELS);
     }
     let mut area = vec![0f32; BINS];
@@ -90,18 +88,17 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     let mut roundness = vec![0f32; BINS];
     // A value's position on [0, 1] of its range, in bins.
     let at = |x: f32| f64::from(x) * (BINS - 1) as f64;
-    for cells in &objects {
-        let a = (cells.len() as f32 * CELL * CELL).log10();
+    for piece in &pieces {
+        let a = piece.area.log10();
         soft_bin(
             &mut area,
             at((a - LOG_AREA.0) / (LOG_AREA.1 - LOG_AREA.0)),
             1.0,
         );
-        let t = cells.iter().map(|c| tops[c]).fold(f32::MIN, f32::max);
-        soft_bin(&mut top, at(t / TOP), 1.0);
-        soft_bin(&mut roundness, at(roundness_of(cells)), 1.0);
+        soft_bin(&mut top, at(piece.top / TOP), 1.0);
+        soft_bin(&mut roundness, at(piece.roundness), 1.0);
     }
-    let density = objects.len() as f64 / (seen as f64 * f64::from(CELL * CELL));
+    let density = pieces.len() as f64 / (seen as f64 * f64::from(CELL * CELL));
     let mut v = Vec::with_capacity(CHANNELS.iter().sum());
     for mut h in [area, top, roundness] {
         unit_sum(&mut h);
@@ -109,6 +106,51 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     }
     v.extend(scalar_channel(BINS, density, 0.0, DENSITY));
     v
+}
+
+/// One connected piece of what stands in the room.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Piece {
+    /// The area of its cells (m²).
+    pub area: f32,
+    /// Its highest point above the floor (m).
+    pub top: f32,
+    /// See [`moments_of`]: 1 round or square, towards 0 a line.
+    pub roundness: f32,
+    /// The mean of its cells' centres (m, sensor frame).
+    pub centre: [f32; 2],
+    /// The direction of its longer second moment (radians, in (-pi/2, pi/2]).
+    pub axis: f32,
+}
+
+/// A scan's pieces and how many cells it saw within [`NEAR`].
+pub(crate) struct Contents {
+    /// The pieces, in the order of their least cell.
+    pub pieces: Vec<Piece>,
+    /// Cells with any return within [`NEAR`].
+    pub seen: usize,
+}
+
+/// The pieces of what stands in the room, as this part cuts them (the
+/// `object_types` and `object_layout` parts describe the same pieces
+/// otherwise); `None` when the scan shows no floor.
+pub(crate) fn contents_of(scan: &PolarScan) -> Option<Contents> {
+    let (floor, ceiling) = scan.floor_and_ceiling()?;
+    let (tops, seen) = contents(scan, floor, ceiling);
+    let pieces = objects(&tops)
+        .iter()
+        .map(|cells| {
+            let (roundness, centre, axis) = moments_of(cells);
+            Piece {
+                area: cells.len() as f32 * CELL * CELL,
+                top: cells.iter().map(|c| tops[c]).fold(f32::MIN, f32::max),
+                roundness,
+                centre,
+                axis,
+            }
+        })
+        .collect();
+    Some(Contents { pieces, seen })
 }
 
 /// The cells holding contents, each with its highest point above the
@@ -173,9 +215,10 @@ fn objects(tops: &FxHashMap<Cell, f32>) -> Vec<Vec<Cell>> {
 }
 
 /// The square root of the ratio of the smaller to the larger second
-/// moment (eigenvalue of the covariance) of the cells' centres: 1 for a
-/// disc or a square, towards 0 for a line.
-fn roundness_of(cells: &[Cell]) -> f32 {
+/// moment (eigenvalue of the covariance) of the cells' centres (1 for a
+/// disc or a square, towards 0 for a line); the centres' mean (m); and the
+/// direction of the larger moment (radians).
+fn moments_of(cells: &[Cell]) -> (f32, [f32; 2], f32) {
     let n = cells.len() as f32;
     let mx = cells.iter().map(|c| c.0 as f32).sum::<f32>() / n;
     let my = cells.iter().map(|c| c.1 as f32).sum::<f32>() / n;
@@ -189,11 +232,13 @@ fn roundness_of(cells: &[Cell]) -> f32 {
     let trace = sxx + syy;
     let d = ((sxx - syy).powi(2) + 4.0 * sxy * sxy).sqrt();
     let (large, small) = ((trace + d) / 2.0, ((trace - d) / 2.0).max(0.0));
-    if large > 0.0 {
+    let roundness = if large > 0.0 {
         (small / large).sqrt()
     } else {
         1.0
-    }
+    };
+    let centre = [(mx + 0.5) * CELL, (my + 0.5) * CELL];
+    (roundness, centre, 0.5 * (2.0 * sxy).atan2(sxx - syy))
 }
 
 #[cfg(test)]

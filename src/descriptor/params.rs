@@ -655,7 +655,7 @@ impl DescriptorParams {
         }
         if !self.parts.iter().any(|p| p.kind.measures_from_floor()) {
             return invalid(
-                "sensor_height is read only by the clutter, columns and objects parts, and these parameters have none of them (presets indoor_clutter, indoor_columns, indoor_searched and indoor_objects have them)",
+                "sensor_height is read only by the clutter, columns, objects, object_types and object_layout parts, and these parameters have none of them (presets indoor_clutter, indoor_columns, indoor_searched and indoor_objects have them)",
             );
         }
         Ok(())

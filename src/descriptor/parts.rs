@@ -8,17 +8,21 @@
 //! compares as the absolute difference of the feature over its range.
 //!
 //! The parts: [`height_range`], [`slice`](mod@slice), [`esf`], [`ring`],
-//! [`clutter`], [`m2dp`], [`columns`], [`iron`], [`objects`].
+//! [`clutter`], [`m2dp`], [`columns`], [`iron`], [`objects`],
+//! [`object_types`], [`object_layout`].
 
 use super::polar::PolarScan;
 use super::shape::ShapedCell;
-use super::{clutter, columns, esf, height_range, iron, m2dp, objects, ring, slice};
+use super::{
+    clutter, columns, esf, height_range, iron, m2dp, object_layout, object_types, objects, ring,
+    slice,
+};
 use crate::cloud::is_finite;
 use rustc_hash::{FxHashMap, FxHashSet};
 use serde::{Deserialize, Serialize};
 
 /// Most parts one descriptor may have (one of each kind).
-pub const MAX_PARTS: usize = 9;
+pub const MAX_PARTS: usize = 11;
 
 /// Which extra part.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -50,6 +54,12 @@ pub enum PartKind {
     /// roundness and number of connected pieces (after object-based place
     /// models, Vasudevan et al. 2007; [`objects`]).
     Objects,
+    /// The same pieces by footprint class and top together (a joint
+    /// histogram, after Pass and Zabih 1999; [`object_types`]).
+    ObjectTypes,
+    /// How the same pieces are laid out: spacing to the nearest, angles
+    /// between long axes ([`object_layout`]).
+    ObjectLayout,
 }
 
 impl PartKind {
@@ -64,6 +74,8 @@ impl PartKind {
         PartKind::Columns,
         PartKind::Iron,
         PartKind::Objects,
+        PartKind::ObjectTypes,
+        PartKind::ObjectLayout,
     ];
 
     /// Position in [`PartKind::ALL`].
@@ -83,6 +95,8 @@ impl PartKind {
             PartKind::Columns => "columns",
             PartKind::Iron => "iron",
             PartKind::Objects => "objects",
+            PartKind::ObjectTypes => "object_types",
+            PartKind::ObjectLayout => "object_layout",
         }
     }
 
@@ -98,6 +112,8 @@ impl PartKind {
             PartKind::Columns => &columns::CHANNELS,
             PartKind::Iron => &iron::CHANNELS,
             PartKind::Objects => &objects::CHANNELS,
+            PartKind::ObjectTypes => &object_types::CHANNELS,
+            PartKind::ObjectLayout => &object_layout::CHANNELS,
         }
     }
 
@@ -106,7 +122,11 @@ impl PartKind {
     pub fn measures_from_floor(self) -> bool {
         matches!(
             self,
-            PartKind::Clutter | PartKind::Columns | PartKind::Objects
+            PartKind::Clutter
+                | PartKind::Columns
+                | PartKind::Objects
+                | PartKind::ObjectTypes
+                | PartKind::ObjectLayout
         )
     }
 
@@ -139,6 +159,8 @@ impl PartKind {
             PartKind::Columns => columns::describe_scan(scan),
             PartKind::Iron => iron::describe(points),
             PartKind::Objects => objects::describe_scan(scan),
+            PartKind::ObjectTypes => object_types::describe_scan(scan),
+            PartKind::ObjectLayout => object_layout::describe_scan(scan),
         };
         debug_assert_eq!(v.len(), self.len());
         v

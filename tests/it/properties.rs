@@ -213,8 +213,9 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 8, ..ProptestConfig::default() })]
 
-    /// M2DP (yaw-only PCA, axis signs by the third moment) and the objects
-    /// part (objects on a 0.1 m grid) turn with the scan: a room with a
+    /// M2DP (yaw-only PCA, axis signs by the third moment) and the objects,
+    /// object_types and object_layout parts (objects on a 0.1 m grid; one
+    /// desk, so no pair of axes) turn with the scan: a room with a
     /// desk, turned about z by any angle, stays nearer to itself than to a
     /// corridor (which holds no object) by a wide margin (their grids do
     /// not turn with it, hence not exactly 0), and any order of its points
@@ -229,7 +230,7 @@ proptest! {
         shuffle_seed in 0u64..1000,
     ) {
         use placecat::descriptor::{Part, PartKind};
-        for kind in [PartKind::M2dp, PartKind::Objects] {
+        for kind in [PartKind::M2dp, PartKind::Objects, PartKind::ObjectTypes, PartKind::ObjectLayout] {
             let p = DescriptorParams {
                 ndt_weight: 0.0,
                 parts: vec![Part { kind, weight: 1.0 }],

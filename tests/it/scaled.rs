@@ -135,18 +135,25 @@ fn a_scaled_model_keeps_the_weights_of_its_scans() {
     assert!(right >= 9, "{right} of 12 members in their own category");
 
     // A model written before the `iron` part kind holds seven part
-    // weights, one written before `objects` eight: both load, the newer
-    // kinds at 0, and are the same model; more kinds than this version
-    // knows, or fewer than seven, are refused.
+    // weights, one written before `objects` eight, one written before
+    // `object_types` and `object_layout` nine: each loads, the newer kinds
+    // at 0, and is the same model; more kinds than this version knows, or
+    // fewer than seven, are refused.
     let mut v: serde_json::Value = serde_json::from_str(&model.to_json().unwrap()).unwrap();
-    let (iron, objects) = (PartKind::Iron.index(), PartKind::Objects.index());
-    assert_eq!((iron, objects), (MAX_PARTS - 2, MAX_PARTS - 1));
-    assert_eq!(
-        (w.part_weights[iron], w.part_weights[objects]),
-        (0.0, 0.0),
-        "no iron or objects part in these parameters"
+    let newer = [
+        PartKind::Iron,
+        PartKind::Objects,
+        PartKind::ObjectTypes,
+        PartKind::ObjectLayout,
+    ]
+    .map(PartKind::index);
+    assert_eq!(newer, [7, 8, 9, 10]);
+    assert_eq!(MAX_PARTS, 11);
+    assert!(
+        newer.iter().all(|&k| w.part_weights[k] == 0.0),
+        "no iron, objects, object_types or object_layout part in these parameters"
     );
-    for earlier in [MAX_PARTS - 1, MAX_PARTS - 2] {
+    for earlier in [9, 8, 7] {
         v["scaled_weights"]["part_weights"]
             .as_array_mut()
             .unwrap()
@@ -154,13 +161,13 @@ fn a_scaled_model_keeps_the_weights_of_its_scans() {
         assert_eq!(LabelledModel::from_json(&v.to_string()).unwrap(), model);
     }
     let weights = v["scaled_weights"]["part_weights"].as_array_mut().unwrap();
-    weights.extend([1.0.into(), 1.0.into(), 1.0.into()]);
+    weights.extend(std::iter::repeat_n(serde_json::Value::from(1.0), 5));
     let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
-    assert!(e.to_string().contains("10 part weights"), "{e}");
+    assert!(e.to_string().contains("12 part weights"), "{e}");
     v["scaled_weights"]["part_weights"]
         .as_array_mut()
         .unwrap()
-        .truncate(MAX_PARTS - 3);
+        .truncate(6);
     let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
     assert!(e.to_string().contains("6 part weights"), "{e}");
     v["scaled_weights"]["part_weights"] = serde_json::json!([]);
