@@ -190,7 +190,10 @@ fn table(o: &mut String, sets: &[SetFigures]) {
                 nearest: s.nearest.clone(),
             })
             .collect();
-        let (seeded, nearest) = (means(&of_row, |s| &s.seeded), means(&of_row, |s| &s.nearest));
+        let (seeded, nearest) = (
+            means(&of_row, |s| &s.seeded),
+            means(&of_row, |s| &s.nearest),
+        );
         let _ = write!(o, "| {family}, {sensor} |");
         for (a, b) in seeded.iter().zip(&nearest) {
             let _ = write!(o, " {a:.1} / {b:.1} |");
@@ -262,6 +265,9 @@ fn main() -> Res<()> {
         "best": names[best],
         "candidate": candidate,
     });
-    write("object-types-dev.json", &serde_json::to_string_pretty(&json)?)?;
+    write(
+        "object-types-dev.json",
+        &serde_json::to_string_pretty(&json)?,
+    )?;
     write("object-types-dev.md", &o)
 }

@@ -124,8 +124,8 @@ fn descriptor_from_json(json: &str) -> crate::Result<Descriptor> {
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_NAMES: &'static str = r#"
-/** A parameter preset (paper Tab. II: indoor, outdoor; docs/design.md#variants: indoor_bands; the public C++ code's settings: perception_oru; with the extra parts of docs/parts.md: indoor_plus, warehouse, outdoor_plus, free_space, indoor_clutter; the Hellinger distance of docs/hellinger.md: outdoor_hellinger; with ranges from 2 m, docs/near-ranges.md: outdoor_near; with the columns part, docs/columns.md: indoor_columns; weighted by a search, docs/indoor-searched.md: indoor_searched; with the objects part, docs/room-objects.md: indoor_objects). `presetNotes()` gives each one's one-line explanation. */
-export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru" | "indoor_plus" | "warehouse" | "outdoor_plus" | "free_space" | "indoor_clutter" | "outdoor_hellinger" | "outdoor_near" | "indoor_columns" | "indoor_searched" | "indoor_objects";
+/** A parameter preset (paper Tab. II: indoor, outdoor; docs/design.md#variants: indoor_bands; the public C++ code's settings: perception_oru; with the extra parts of docs/parts.md: indoor_plus, warehouse, outdoor_plus, free_space, indoor_clutter; the Hellinger distance of docs/hellinger.md: outdoor_hellinger; with ranges from 2 m, docs/near-ranges.md: outdoor_near; with the columns part, docs/columns.md: indoor_columns; weighted by a search, docs/indoor-searched.md: indoor_searched; with the objects part, docs/room-objects.md: indoor_objects; with the objects by size and height and their layout, docs/object-types-dev.md: indoor_object_types). `presetNotes()` gives each one's one-line explanation. */
+export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru" | "indoor_plus" | "warehouse" | "outdoor_plus" | "free_space" | "indoor_clutter" | "outdoor_hellinger" | "outdoor_near" | "indoor_columns" | "indoor_searched" | "indoor_objects" | "indoor_object_types";
 /** A preset's name and its one-line explanation. */
 export interface PresetNote {
     name: Preset;
@@ -156,7 +156,8 @@ pub fn version() -> String {
 /// Descriptor parameters of a preset (`indoor`, `outdoor`, `indoor_bands`,
 /// `perception_oru`, `indoor_plus`, `warehouse`, `outdoor_plus`,
 /// `free_space`, `indoor_clutter`, `outdoor_hellinger`, `outdoor_near`,
-/// `indoor_columns`, `indoor_searched`, `indoor_objects`) as a plain object
+/// `indoor_columns`, `indoor_searched`, `indoor_objects`,
+/// `indoor_object_types`) as a plain object
 /// whose fields can be changed.
 #[wasm_bindgen(js_name = presetParams, unchecked_return_type = "Required<DescriptorParams>")]
 pub fn preset_params(

@@ -19,7 +19,7 @@
 //! constants were fixed in the twenty-sixth round's plan (docs/seeds.md)
 //! before any run.
 
-use super::objects::{contents_of, Piece};
+use super::objects::{contents_of, Contents, Piece};
 use super::parts::{empty_channels, soft_bin, unit_sum};
 use super::polar::PolarScan;
 use std::f32::consts::{FRAC_PI_2, PI};
@@ -39,7 +39,12 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
 
 /// The part of a scan whose ranges and azimuths are known.
 pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
-    match contents_of(scan) {
+    of_contents(contents_of(scan).as_ref())
+}
+
+/// The part of a scan's pieces (cut once for the parts that read them).
+pub(crate) fn of_contents(contents: Option<&Contents>) -> Vec<f32> {
+    match contents {
         Some(c) if !c.pieces.is_empty() => of_pieces(&c.pieces),
         _ => empty_channels(&CHANNELS),
     }

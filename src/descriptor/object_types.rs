@@ -25,7 +25,7 @@
 //! mass in bin 0. The constants were fixed in the twenty-sixth round's
 //! plan (docs/seeds.md) before any run.
 
-use super::objects::{contents_of, Piece};
+use super::objects::{contents_of, Contents, Piece};
 use super::parts::{empty_channels, soft_bin, unit_sum};
 use super::polar::PolarScan;
 
@@ -45,7 +45,12 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
 
 /// The part of a scan whose ranges and azimuths are known.
 pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
-    match contents_of(scan) {
+    of_contents(contents_of(scan).as_ref())
+}
+
+/// The part of a scan's pieces (cut once for the parts that read them).
+pub(crate) fn of_contents(contents: Option<&Contents>) -> Vec<f32> {
+    match contents {
         Some(c) if !c.pieces.is_empty() => of_pieces(&c.pieces),
         _ => empty_channels(&CHANNELS),
     }

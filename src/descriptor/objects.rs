@@ -76,7 +76,13 @@ pub fn describe(points: &[[f32; 3]]) -> Vec<f32> {
 
 /// The part of a scan whose ranges and azimuths are known.
 pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
-    let Some(Contents { pieces, seen }) = contents_of(scan) else {
+    of_contents(contents_of(scan).as_ref())
+}
+
+/// The part of a scan's [`contents_of`] (cut once for the three parts
+/// that read them).
+pub(crate) fn of_contents(contents: Option<&Contents>) -> Vec<f32> {
+    let Some(Contents { pieces, seen }) = contents else {
         return empty_channels(&CHANNELS);
     };
     // Every piece's cells were seen, so `seen` > 0 past this.
@@ -88,7 +94,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
     let mut roundness = vec![0f32; BINS];
     // A value's position on [0, 1] of its range, in bins.
     let at = |x: f32| f64::from(x) * (BINS - 1) as f64;
-    for piece in &pieces {
+    for piece in pieces {
         let a = piece.area.log10();
         soft_bin(
             &mut area,
@@ -98,7 +104,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
         soft_bin(&mut top, at(piece.top / TOP), 1.0);
         soft_bin(&mut roundness, at(piece.roundness), 1.0);
     }
-    let density = pieces.len() as f64 / (seen as f64 * f64::from(CELL * CELL));
+    let density = pieces.len() as f64 / (*seen as f64 * f64::from(CELL * CELL));
     let mut v = Vec::with_capacity(CHANNELS.iter().sum());
     for mut h in [area, top, roundness] {
         unit_sum(&mut h);

@@ -158,7 +158,7 @@ pub type Preset = fn() -> DescriptorParams;
 
 /// Every parameter preset, by name: the one list. The CLI's help names
 /// them from here; a test holds the JS `Preset` type and the README to it.
-pub const PRESETS: [(&str, Preset); 14] = [
+pub const PRESETS: [(&str, Preset); 15] = [
     ("indoor", DescriptorParams::indoor),
     ("outdoor", DescriptorParams::outdoor),
     ("indoor_bands", DescriptorParams::indoor_bands),
@@ -173,11 +173,12 @@ pub const PRESETS: [(&str, Preset); 14] = [
     ("indoor_columns", DescriptorParams::indoor_columns),
     ("indoor_searched", DescriptorParams::indoor_searched),
     ("indoor_objects", DescriptorParams::indoor_objects),
+    ("indoor_object_types", DescriptorParams::indoor_object_types),
 ];
 
 /// One line per preset saying what it is for, in the order of [`PRESETS`]
 /// (the CLI's help, the page's menu and the wasm API show these).
-pub const PRESET_NOTES: [(&str, &str); 14] = [
+pub const PRESET_NOTES: [(&str, &str); 15] = [
     ("indoor", "the paper's indoor parameters (Tab. II)"),
     ("outdoor", "the paper's outdoor parameters (Tab. II)"),
     (
@@ -227,6 +228,10 @@ pub const PRESET_NOTES: [(&str, &str); 14] = [
     (
         "indoor_objects",
         "indoor_searched plus the objects part (what stands in the room, object by object: footprints, tops, roundness, number): room kinds; above indoor_searched on office floors and on schools and wards seen with their own sensor, below it on schools seen with 16 to 64 beams (docs/room-objects.md); its kinds group best by spectral clustering (docs/spectral.md); on hotel, mall and home floors written after it, 83, 64 and 76 % with spectral seeding (docs/fresh-family.md, docs/fresh-family-2.md, docs/fresh-family-3.md)",
+    ),
+    (
+        "indoor_object_types",
+        "indoor_objects plus the same objects by size and height together and their layout (spacing, parallel rows): chosen on the development seeds of the hotel, mall and home floors; judged on institute floors written after it (docs/object-types-dev.md)",
     ),
 ];
 
@@ -471,6 +476,31 @@ impl DescriptorParams {
             kind: PartKind::Objects,
             weight: 10.0,
         });
+        p
+    }
+
+    /// `indoor_objects` and the `object_types` and `object_layout` parts:
+    /// the objects by footprint class and top together, and how they are
+    /// laid out. The twenty-sixth round's plan (docs/seeds.md) fixed one
+    /// part of six channels at a weight w; chosen on development seeds
+    /// 1-6 of the hotel, mall and home floors with w = 10
+    /// (docs/object-types-dev.md), that is `object_types` (four channels)
+    /// at 4w/6 and `object_layout` (two) at 2w/6. Institute floors written
+    /// after it judge it (docs/fresh-family-4.md).
+    pub fn indoor_object_types() -> Self {
+        let mut p = Self::indoor_objects();
+        p.preset = "indoor_object_types".into();
+        let w = 10.0;
+        p.parts.extend([
+            Part {
+                kind: PartKind::ObjectTypes,
+                weight: 4.0 * w / 6.0,
+            },
+            Part {
+                kind: PartKind::ObjectLayout,
+                weight: 2.0 * w / 6.0,
+            },
+        ]);
         p
     }
 

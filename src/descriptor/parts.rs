@@ -196,10 +196,21 @@ pub(crate) fn describe_parts_sharing(
     ndt_cells: Option<&[ShapedCell]>,
 ) -> Vec<Vec<f32>> {
     let scan = std::cell::OnceCell::new();
+    let polar = || scan.get_or_init(|| PolarScan::with_sensor_height(points, sensor_height));
+    // The objects' pieces, cut once for the three parts that describe them.
+    let contents = std::cell::OnceCell::new();
+    let pieces = || {
+        contents
+            .get_or_init(|| objects::contents_of(polar()))
+            .as_ref()
+    };
     kinds
         .iter()
         .map(|&kind| {
             let v = match kind {
+                PartKind::Objects => objects::of_contents(pieces()),
+                PartKind::ObjectTypes => object_types::of_contents(pieces()),
+                PartKind::ObjectLayout => object_layout::of_contents(pieces()),
                 PartKind::HeightRange => height_range::describe(points),
                 PartKind::Esf => esf::describe(points),
                 PartKind::M2dp => m2dp::describe(points),
@@ -207,9 +218,7 @@ pub(crate) fn describe_parts_sharing(
                     Some(cells) => iron::describe_cells(cells),
                     None => iron::describe(points),
                 },
-                _ => kind.describe_scan(
-                    scan.get_or_init(|| PolarScan::with_sensor_height(points, sensor_height)),
-                ),
+                _ => kind.describe_scan(polar()),
             };
             debug_assert_eq!(v.len(), kind.len());
             v

@@ -99,6 +99,13 @@ fn nearest_scan_is_from_the_same_place_indoor_objects_preset() {
     check(DescriptorParams::indoor_objects());
 }
 
+/// The twenty-sixth round's candidate (indoor_objects plus the objects by
+/// size and height, and their layout).
+#[test]
+fn nearest_scan_is_from_the_same_place_indoor_object_types_preset() {
+    check(DescriptorParams::indoor_object_types());
+}
+
 /// The presets whose slice and clutter parts changed when a sector's
 /// vertex among returns at the same range stopped depending on the points'
 /// order (the real files' quantised coordinates tie often): their
