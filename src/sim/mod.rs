@@ -27,6 +27,9 @@
 //!   twenty-fourth round by another hand, likewise); `home`: apartment
 //!   building floors of living rooms, kitchens, bedrooms and bathrooms
 //!   off a shared corridor ([`home`], written for issue 18's twenty-fifth
+//!   round by another hand, likewise); `institute`: research-institute
+//!   floors of laboratories, workshops, server rooms and seminar rooms
+//!   off a corridor ([`institute`], written for issue 18's twenty-sixth
 //!   round by another hand, likewise).
 //!
 //! Sensors ride on a vehicle: on uneven ground they keep their height above
@@ -36,6 +39,7 @@ pub mod geometry;
 pub mod home;
 pub mod hospital;
 pub mod hotel;
+pub mod institute;
 pub mod lidar;
 pub mod mall;
 pub mod office_floor;
@@ -85,6 +89,9 @@ pub enum SceneKind {
     /// Residential floors: a shared corridor, living rooms, kitchens,
     /// bedrooms and bathrooms.
     Home,
+    /// Research-institute floors: a corridor, laboratories, workshops,
+    /// server rooms and seminar rooms.
+    Institute,
 }
 
 impl std::str::FromStr for SceneKind {
@@ -100,8 +107,9 @@ impl std::str::FromStr for SceneKind {
             "hotel" => Ok(SceneKind::Hotel),
             "mall" => Ok(SceneKind::Mall),
             "home" => Ok(SceneKind::Home),
+            "institute" => Ok(SceneKind::Institute),
             other => invalid(format!(
-                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel, mall, home)"
+                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel, mall, home, institute)"
             )),
         }
     }
@@ -186,7 +194,8 @@ impl SimParams {
                 | SceneKind::Hospital
                 | SceneKind::Hotel
                 | SceneKind::Mall
-                | SceneKind::Home => 24,
+                | SceneKind::Home
+                | SceneKind::Institute => 24,
                 _ => DEFAULT_SEQUENCE_SCANS,
             },
             scans_per_room: match scene {
@@ -195,7 +204,8 @@ impl SimParams {
                 | SceneKind::Hospital
                 | SceneKind::Hotel
                 | SceneKind::Mall
-                | SceneKind::Home => 3,
+                | SceneKind::Home
+                | SceneKind::Institute => 3,
                 _ => 5,
             },
             lidar: None,
@@ -215,6 +225,7 @@ impl SimParams {
             SceneKind::Hotel => self.scans * hotel::HOTEL_KINDS.len(),
             SceneKind::Mall => self.scans * mall::MALL_KINDS.len(),
             SceneKind::Home => self.scans * home::HOME_KINDS.len(),
+            SceneKind::Institute => self.scans * institute::INSTITUTE_KINDS.len(),
             _ => self.scans,
         }
     }
@@ -395,6 +406,9 @@ impl Simulation {
             }
             SceneKind::Home => {
                 (scenes_out, shots) = office_floor::scans(&home::HOME, params, &mut r);
+            }
+            SceneKind::Institute => {
+                (scenes_out, shots) = office_floor::scans(&institute::INSTITUTE, params, &mut r);
             }
         }
         let mut order: Vec<usize> = (0..shots.len()).collect();

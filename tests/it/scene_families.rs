@@ -1,13 +1,14 @@
 //! The scene families and sensors of the descriptor evaluation (issue 18):
 //! sensors by beam count, sensor heights, other room plans and the office,
-//! school, hospital, hotel, mall and home floors, checked against geometry known in
-//! advance.
+//! school, hospital, hotel, mall, home and institute floors, checked against
+//! geometry known in advance.
 
 use crate::cli_common::{fails, placecat, succeeds, tmp};
 use placecat::sim::geometry::{Ray, Shape};
 use placecat::sim::home::{HOME, HOME_KINDS};
 use placecat::sim::hospital::{HOSPITAL, HOSPITAL_KINDS};
 use placecat::sim::hotel::{HOTEL, HOTEL_KINDS};
+use placecat::sim::institute::{INSTITUTE, INSTITUTE_KINDS};
 use placecat::sim::mall::{MALL, MALL_KINDS};
 use placecat::sim::office_floor::{self, FloorPlan, OFFICE, OFFICE_FLOOR_KINDS};
 use placecat::sim::school::{SCHOOL, SCHOOL_KINDS};
@@ -293,7 +294,8 @@ fn simulate_takes_a_sensor_a_height_and_the_office_floor() {
             && err.contains("hospital")
             && err.contains("hotel")
             && err.contains("mall")
-            && err.contains("home"),
+            && err.contains("home")
+            && err.contains("institute"),
         "{err}"
     );
 }
@@ -701,6 +703,84 @@ fn simulate_writes_home_floors() {
     }
 }
 
+#[test]
+fn institute_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
+    for seed in 1..=4 {
+        check_floor(&INSTITUTE, seed);
+    }
+}
+
+#[test]
+fn institute_floors_keep_the_school_defaults_and_hold_every_kind() {
+    let p = SimParams::new(SceneKind::Institute, 1);
+    assert_eq!((p.scans, p.scans_per_room), (24, 3));
+    assert_eq!(p.total(), 24 * INSTITUTE_KINDS.len());
+    assert_eq!(
+        "institute".parse::<SceneKind>().unwrap(),
+        SceneKind::Institute
+    );
+    assert_eq!(
+        serde_json::to_string(&SceneKind::Institute).unwrap(),
+        "\"institute\""
+    );
+    assert_eq!(
+        serde_json::from_str::<SceneKind>("\"institute\"").unwrap(),
+        SceneKind::Institute
+    );
+    assert_eq!(
+        INSTITUTE_KINDS,
+        [
+            "corridor",
+            "laboratory",
+            "workshop",
+            "server_room",
+            "seminar_room"
+        ]
+    );
+    for seed in 1..=6 {
+        let mut r = placecat::rng::rng(seed);
+        let floor = office_floor::floor(&INSTITUTE, &mut r);
+        // One workshop, one server room and one seminar room,
+        // laboratories in both rows (filling them); a laboratory
+        // building's corridor, ceiling and room sizes.
+        let count = |kind: &str| floor.rooms.iter().filter(|r| r.kind == kind).count();
+        assert_eq!(count("workshop"), 1, "seed {seed}");
+        assert_eq!(count("server_room"), 1, "seed {seed}");
+        assert_eq!(count("seminar_room"), 1, "seed {seed}");
+        assert!(count("laboratory") >= 2, "seed {seed}");
+        let cw = floor.rooms[0].max[1] - floor.rooms[0].min[1];
+        assert!((2.0..=2.8).contains(&cw), "seed {seed}: corridor {cw} m");
+        assert!((2.9..=3.3).contains(&floor.height), "seed {seed}");
+        for room in &floor.rooms[1..] {
+            let w = room.max[0] - room.min[0];
+            let d = room.max[1] - room.min[1];
+            let (lo, hi) = match room.kind {
+                "laboratory" => (5.6, 8.4),
+                "workshop" => (6.5, 11.0),
+                "server_room" => (4.0, 7.5),
+                "seminar_room" => (6.0, 10.0),
+                _ => (0.5, 5.6),
+            };
+            assert!((lo..=hi).contains(&w), "seed {seed}: {} {w} m", room.kind);
+            assert!((6.0..=8.0).contains(&d), "seed {seed}: {} {d} m", room.kind);
+        }
+    }
+}
+
+#[test]
+fn institute_scans_are_labelled_counted_and_stand_in_their_rooms() {
+    scans_are_labelled_counted_and_stand_in_their_rooms(SceneKind::Institute, &INSTITUTE, 2);
+    default_counts(SceneKind::Institute, &INSTITUTE_KINDS);
+}
+
+#[test]
+fn simulate_writes_institute_floors() {
+    let dir = writes_two_scans_of_each_kind("institute", &INSTITUTE_KINDS);
+    for i in 0..2 * INSTITUTE_KINDS.len() {
+        assert!(dir.join(format!("scan_{i:05}.ply")).is_file(), "scan {i}");
+    }
+}
+
 /// A digest of every scan of a small simulation: labels, rooms, poses and
 /// tilts to 1e-4 (m, radians) and returns to the millimetre (FNV-1a). Any
 /// change to what a family draws or casts moves it. The rays' directions
@@ -749,8 +829,9 @@ fn digest(scene: SceneKind, edit: impl FnOnce(&mut SimParams)) -> u64 {
 /// of the twenty-second round's test run (dbc39e2; the families it had),
 /// of the hotel's (ebee06a) and of the mall's (377fcbf); the home's
 /// were pinned as the family was written, before its round's one test
-/// run. A deliberate change of a generator changes its digest here, and
-/// the reports that ran it must be run again.
+/// run, and so were the institute's. A deliberate change of a generator
+/// changes its digest here, and the reports that ran it must be run
+/// again.
 #[cfg(all(target_arch = "x86_64", target_os = "linux"))]
 #[test]
 fn every_scene_family_casts_the_scans_its_rounds_were_judged_on() {
@@ -808,6 +889,11 @@ fn every_scene_family_casts_the_scans_its_rounds_were_judged_on() {
             "home, 16 beams",
             digest(SceneKind::Home, |p| p.lidar = Some(beams(16))),
         ),
+        ("institute", digest(SceneKind::Institute, |_| {})),
+        (
+            "institute, 16 beams",
+            digest(SceneKind::Institute, |p| p.lidar = Some(beams(16))),
+        ),
     ];
     let pinned: Vec<(&str, u64)> = vec![
         ("indoor", 7042316121394205695),
@@ -829,6 +915,8 @@ fn every_scene_family_casts_the_scans_its_rounds_were_judged_on() {
         ("mall at 1.8 m", 3318734351154363825),
         ("home", 4898228458892765390),
         ("home, 16 beams", 1576060517157972008),
+        ("institute", 11870764431139219717),
+        ("institute, 16 beams", 5938898577027666444),
     ];
     assert_eq!(got, pinned);
 }
@@ -860,6 +948,7 @@ fn room_scans_stand_clear_of_what_reaches_the_sensor() {
         SceneKind::Hotel,
         SceneKind::Mall,
         SceneKind::Home,
+        SceneKind::Institute,
     ];
     for scene in scenes {
         for seed in 1..=3 {

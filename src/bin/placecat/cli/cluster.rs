@@ -468,9 +468,9 @@ pub struct SensorArgs {
     /// small robot, 1.8 for a car roof. Default: the scene's own.
     #[arg(long)]
     sensor_height: Option<f64>,
-    /// indoor, office-floor, school, hospital, hotel, mall, home: scans
-    /// taken in each room (default 5 indoor, 3 on office, school,
-    /// hospital, hotel, mall and home floors).
+    /// indoor, office-floor, school, hospital, hotel, mall, home,
+    /// institute: scans taken in each room (default 5 indoor, 3 on
+    /// office, school, hospital, hotel, mall, home and institute floors).
     #[arg(long)]
     scans_per_room: Option<usize>,
 }
