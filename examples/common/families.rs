@@ -176,6 +176,19 @@ pub fn home_family() -> Family {
     }
 }
 
+/// The research-institute floors (`--scene institute`), written for
+/// issue 18's twenty-sixth round by another hand after the twenty-fifth
+/// round's figures, on the hotel's sensor grid. Only that round's example
+/// uses it.
+#[allow(dead_code)]
+pub fn institute_family() -> Family {
+    Family {
+        name: "institute (fresh)",
+        scene: SceneKind::Institute,
+        ..hotel_family()
+    }
+}
+
 /// The room rows of issue 18's rounds 9-16: every family with rooms (the
 /// hospital floors last) with its own sensor, then each of its others.
 #[allow(dead_code)]

@@ -14,6 +14,13 @@ use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 
 pub const ROOM_PRESETS: &[&str] = &["indoor", "indoor_searched", "indoor_objects"];
+/// The twenty-sixth round's family also with its candidate preset.
+pub const INSTITUTE_PRESETS: &[&str] = &[
+    "indoor",
+    "indoor_searched",
+    "indoor_objects",
+    "indoor_object_types",
+];
 pub const WAREHOUSE_PRESETS: &[&str] = &["indoor", "indoor_plus"];
 pub const OUTDOOR_PRESETS: &[&str] = &["outdoor", "outdoor_near"];
 /// Issue 18's targets (%): indoor kinds, warehouse halls.
@@ -109,6 +116,7 @@ pub fn presets_of(f: &Family) -> &'static [&'static str] {
     match f.name {
         "warehouse" => WAREHOUSE_PRESETS,
         "outdoor" => OUTDOOR_PRESETS,
+        "institute (fresh)" => INSTITUTE_PRESETS,
         _ => ROOM_PRESETS,
     }
 }
