@@ -207,7 +207,12 @@ fn describe_parts(c: &mut Criterion) {
         }
         // Whole descriptors of the presets issue 18's last rounds read
         // (the NDT histogram and every part, as `describe` makes them).
-        for preset in ["indoor_columns", "indoor_searched", "indoor_objects"] {
+        for preset in [
+            "indoor_columns",
+            "indoor_searched",
+            "indoor_objects",
+            "indoor_object_types",
+        ] {
             let params = DescriptorParams::preset(preset).unwrap();
             g.bench_with_input(
                 BenchmarkId::new(format!("preset_{preset}"), label),
