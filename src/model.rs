@@ -78,14 +78,15 @@ pub struct ScaledWeights {
 fn part_weights_of_any_version<'de, D: serde::Deserializer<'de>>(
     d: D,
 ) -> std::result::Result<[f32; MAX_PARTS], D::Error> {
-    /// Part kinds when the median scale came (before `iron`).
-    const FIRST: usize = 7;
+    /// The part kinds of the versions that wrote models: before `iron`
+    /// (when the median scale came), before `objects`, before
+    /// `object_types` and `object_layout`.
+    const EARLIER: [usize; 3] = [7, 8, 9];
     let given = Vec::<f32>::deserialize(d)?;
-    if !(FIRST..=MAX_PARTS).contains(&given.len()) {
+    if given.len() != MAX_PARTS && !EARLIER.contains(&given.len()) {
         return Err(serde::de::Error::custom(format!(
-            "{} part weights, but this version knows {MAX_PARTS} part kinds (or {FIRST} to {} from earlier versions)",
-            given.len(),
-            MAX_PARTS - 1
+            "{} part weights, but this version knows {MAX_PARTS} part kinds (or 7, 8 or 9 from earlier versions)",
+            given.len()
         )));
     }
     let mut weights = [0.0; MAX_PARTS];

@@ -14,10 +14,17 @@
 //!   (roundness below 0.5), folded to [0, 90] degrees (10 bins; bin 0
 //!   when there are fewer than two): parallel rows put it near 0.
 //!
-//! Both are invariant to rotation about z up to the grid's cells. A scan
-//! with no floor or no piece puts every channel's mass in bin 0. The
-//! constants were fixed in the twenty-sixth round's plan (docs/seeds.md)
-//! before any run.
+//! The spacings are invariant to rotation about z up to the grid's cells;
+//! the angles are not where a piece's roundness lies near 0.5: the grid
+//! turned under it can carry it across the threshold, and a pair appears
+//! or goes (a three-piece office turned by 1.1 rad moves the part by 0.33,
+//! tests/it/parts.rs). A scan with no floor or no piece puts every
+//! channel's mass in bin 0, which in the spacing channel reads as pieces
+//! packed close and in the angle channel as parallel axes, as do fewer
+//! than two elongated pieces: these limits are the plan's or were fixed
+//! before any run (a lone piece's spacing counts as beyond 4 m, the top
+//! bin). The constants were fixed in the twenty-sixth round's plan
+//! (docs/seeds.md) before any run.
 
 use super::objects::{contents_of, Contents, Piece};
 use super::parts::{empty_channels, soft_bin, unit_sum};
@@ -124,6 +131,15 @@ mod tests {
         for (a, b) in v.iter().zip(&turned) {
             assert!((a - b).abs() < 1e-4, "{v:?} {turned:?}");
         }
+    }
+
+    /// Axes near +90 and -90 degrees are nearly the same line: 1.5 and
+    /// -1.5 rad lie pi - 3 = 0.14 rad apart, not 3 rad.
+    #[test]
+    fn axes_on_either_side_of_the_vertical_are_near() {
+        let v = of_pieces(&[piece(0.0, 0.0, 0.2, 1.5), piece(2.0, 0.0, 0.2, -1.5)]);
+        let want = (PI - 3.0) / FRAC_PI_2 * (BINS - 1) as f32;
+        assert!((mean_bin(&v[BINS..]) - want).abs() < 1e-4, "{v:?}");
     }
 
     /// Axes across each other meet at 90 degrees whichever way each

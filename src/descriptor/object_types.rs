@@ -22,7 +22,10 @@
 //! So the joint histogram is stored as the classes' shares and each
 //! class's tops, channels that compare by the earth mover's distance as
 //! every part's. A scan with no floor or no piece puts every channel's
-//! mass in bin 0. The constants were fixed in the twenty-sixth round's
+//! mass in bin 0. An empty class's bin 0 lies near real pieces of low tops
+//! (a top of 0.1 m is at bin 0.375), so two scans that differ in whether a
+//! class holds low pieces differ little in its channel; the shares channel
+//! tells them apart. The constants were fixed in the twenty-sixth round's
 //! plan (docs/seeds.md) before any run.
 
 use super::objects::{contents_of, Contents, Piece};

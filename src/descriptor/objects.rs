@@ -345,6 +345,24 @@ mod tests {
         assert_eq!(mean_bin(&joined, 3), mean_bin(&one, 3));
     }
 
+    /// A line of cells along x, along y and along the diagonal: roundness
+    /// 0, the long axis 0, pi/2 and pi/4, and the centre its middle.
+    #[test]
+    fn a_line_of_cells_has_its_direction_and_middle() {
+        let along = |dx: i32, dy: i32| (0..5).map(|i| (i * dx, i * dy)).collect::<Vec<Cell>>();
+        for ((dx, dy), axis) in [
+            ((1, 0), 0.0),
+            ((0, 1), std::f32::consts::FRAC_PI_2),
+            ((1, 1), std::f32::consts::FRAC_PI_4),
+        ] {
+            let (roundness, centre, a) = moments_of(&along(dx, dy));
+            assert!(roundness < 1e-3, "{dx},{dy}: {roundness}");
+            assert!((a - axis).abs() < 1e-5, "{dx},{dy}: {a}");
+            let want = [(2 * dx) as f32 + 0.5, (2 * dy) as f32 + 0.5].map(|c| c * CELL);
+            assert!((centre[0] - want[0]).abs() < 1e-5 && (centre[1] - want[1]).abs() < 1e-5);
+        }
+    }
+
     /// What stands against a wall belongs to the wall: a top within the
     /// last tenth of its sectors' range is no object.
     #[test]

@@ -231,7 +231,7 @@ pub const PRESET_NOTES: [(&str, &str); 15] = [
     ),
     (
         "indoor_object_types",
-        "indoor_objects plus the same objects by size and height together and their layout (spacing, parallel rows): room kinds; chosen on the development seeds of the hotel, mall and home floors; on institute floors written after it 89 against indoor_objects' 87 % with spectral seeding, a point below it on the earlier families' development seeds (docs/fresh-family-4.md, docs/object-types-dev.md)",
+        "indoor_objects plus the same objects by size and height together and their layout (spacing, parallel rows): room kinds; chosen on the development seeds of the hotel, mall and home floors; on institute floors written while it was built 89 against indoor_objects' 87 % with spectral seeding, a point below it on the earlier families' development seeds (docs/fresh-family-4.md, docs/object-types-dev.md)",
     ),
 ];
 
@@ -685,7 +685,7 @@ impl DescriptorParams {
         }
         if !self.parts.iter().any(|p| p.kind.measures_from_floor()) {
             return invalid(
-                "sensor_height is read only by the clutter, columns, objects, object_types and object_layout parts, and these parameters have none of them (presets indoor_clutter, indoor_columns, indoor_searched and indoor_objects have them)",
+                "sensor_height is read only by the clutter, columns, objects, object_types and object_layout parts, and these parameters have none of them (presets indoor_clutter, indoor_columns, indoor_searched, indoor_objects and indoor_object_types have them)",
             );
         }
         Ok(())

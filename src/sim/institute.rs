@@ -1,7 +1,8 @@
 //! Research-institute floors, a scene family written for issue 18's
-//! twenty-sixth round by another hand, after the descriptors and the
-//! recommended room setting existed, so that none of them was shaped on
-//! it: the layout of [`super::office_floor`] (a corridor between two rows
+//! twenty-sixth round by another hand, after the recommended room setting
+//! existed and while that round's two descriptor parts were built (the
+//! hand knew nothing of them), so that none of them was shaped on it; the
+//! round's plan named its kinds: the layout of [`super::office_floor`] (a corridor between two rows
 //! of rooms, one ceiling) as a floor of an institute's laboratory
 //! building, its rooms furnished as real ones are.
 //!

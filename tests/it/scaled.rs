@@ -160,8 +160,13 @@ fn a_scaled_model_keeps_the_weights_of_its_scans() {
             .truncate(earlier);
         assert_eq!(LabelledModel::from_json(&v.to_string()).unwrap(), model);
     }
+    // Ten: no version wrote it (the two kinds came together).
     let weights = v["scaled_weights"]["part_weights"].as_array_mut().unwrap();
-    weights.extend(std::iter::repeat_n(serde_json::Value::from(1.0), 5));
+    weights.extend(std::iter::repeat_n(serde_json::Value::from(0.0), 3));
+    let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
+    assert!(e.to_string().contains("10 part weights"), "{e}");
+    let weights = v["scaled_weights"]["part_weights"].as_array_mut().unwrap();
+    weights.extend(std::iter::repeat_n(serde_json::Value::from(1.0), 2));
     let e = LabelledModel::from_json(&v.to_string()).unwrap_err();
     assert!(e.to_string().contains("12 part weights"), "{e}");
     v["scaled_weights"]["part_weights"]
