@@ -631,8 +631,10 @@ fn corridor_fittings(length: f64, width: f64, h: f64, r: &mut ChaCha8Rng, s: &mu
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::hotel::{extent, overlap};
-    use crate::sim::office_floor::{boxes, furnished_room};
+    use crate::sim::hotel::extent;
+    use crate::sim::office_floor::{
+        assert_doors_swing_clear, boxes, furnished_room, has_free_spot,
+    };
 
     /// A room of `kind` of a size drawn from the plan's ranges.
     fn room(kind: &str, r: &mut ChaCha8Rng) -> ([f64; 3], Vec<Shape>) {
@@ -669,24 +671,7 @@ mod tests {
     #[test]
     fn doors_keep_their_swing_clear_and_some_are_shut() {
         let mut r = crate::rng::rng(3);
-        for kind in &HOME_KINDS[1..] {
-            for _ in 0..300 {
-                let ([w, ..], s) = room(kind, &mut r);
-                let x = (HOME.door)(kind, w, 0.9, true, &s, &mut r).expect("open");
-                assert!(
-                    x >= 0.1 - 1e-9 && x + 0.9 <= w - 0.1 + 1e-9,
-                    "{kind}: {x} in {w}"
-                );
-                let swing = ([x, 0.0], [x + 0.9, SWING]);
-                for shape in &s {
-                    let (a, b, _, _) = extent(shape);
-                    assert!(
-                        !overlap((a, b), swing),
-                        "{kind} {w}: door at {x}: {shape:?}"
-                    );
-                }
-            }
-        }
+        assert_doors_swing_clear(&HOME, &HOME_KINDS[1..], SWING, &mut r);
         for (kind, lo, hi) in [
             ("bathroom", 430, 570),
             ("bedroom", 330, 470),
@@ -698,19 +683,6 @@ mod tests {
                 .count();
             assert!((lo..=hi).contains(&shut), "{kind}: {shut}");
         }
-    }
-
-    /// Whether a scan can stand in a room `w` by `d` with furniture `s`:
-    /// a spot 0.5 m from the walls and 0.4 m from the furniture.
-    fn has_free_spot(w: f64, d: f64, s: &[Shape]) -> bool {
-        let n = 40;
-        (0..=n).any(|i| {
-            (0..=n).any(|j| {
-                let x = 0.5 + (w - 1.0) * i as f64 / n as f64;
-                let y = 0.5 + (d - 1.0) * j as f64 / n as f64;
-                s.iter().all(|p| p.horizontal_distance(x, y) > 0.4)
-            })
-        })
     }
 
     #[test]

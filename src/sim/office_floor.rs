@@ -610,6 +610,53 @@ pub(super) fn furnished_room(
     (size, s)
 }
 
+/// Whether a scan can stand in a room `w` by `d` with furniture `s`:
+/// a spot 0.5 m from the walls and 0.4 m from the furniture (the floor
+/// families' fixture tests).
+#[cfg(test)]
+pub(super) fn has_free_spot(w: f64, d: f64, s: &[Shape]) -> bool {
+    let n = 40;
+    (0..=n).any(|i| {
+        (0..=n).any(|j| {
+            let x = 0.5 + (w - 1.0) * i as f64 / n as f64;
+            let y = 0.5 + (d - 1.0) * j as f64 / n as f64;
+            s.iter().all(|p| p.horizontal_distance(x, y) > 0.4)
+        })
+    })
+}
+
+/// Check that `plan` puts an open 0.9 m door of each of `kinds` 0.1 m
+/// or more from the room's ends, and that nothing stands within `swing`
+/// m of it inside the room (300 rooms a kind; the floor families' fixture
+/// tests).
+#[cfg(test)]
+pub(super) fn assert_doors_swing_clear(
+    plan: &FloorPlan,
+    kinds: &[&str],
+    swing: f64,
+    r: &mut ChaCha8Rng,
+) {
+    use super::hotel::{extent, overlap};
+    for kind in kinds {
+        for _ in 0..300 {
+            let ([w, ..], s) = furnished_room(plan, kind, r);
+            let x = (plan.door)(kind, w, 0.9, true, &s, r).expect("open");
+            assert!(
+                x >= 0.1 - 1e-9 && x + 0.9 <= w - 0.1 + 1e-9,
+                "{kind}: {x} in {w}"
+            );
+            let clear = ([x, 0.0], [x + 0.9, swing]);
+            for shape in &s {
+                let (a, b, _, _) = extent(shape);
+                assert!(
+                    !overlap((a, b), clear),
+                    "{kind} {w}: door at {x}: {shape:?}"
+                );
+            }
+        }
+    }
+}
+
 /// The axis-aligned boxes of `s`: lowest and highest corners.
 #[cfg(test)]
 pub(super) fn boxes(s: &[Shape]) -> Vec<([f64; 3], [f64; 3])> {
