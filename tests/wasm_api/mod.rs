@@ -318,7 +318,7 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     // Every preset has its note, and the presets with parts carry them.
     let notes: js_sys::Array = preset_notes().unwrap().unchecked_into();
     assert_eq!(notes.length() as usize, placecat::descriptor::PRESETS.len());
-    assert_eq!(notes.length(), 14);
+    assert_eq!(notes.length(), 15);
     let hellinger = js_sys::JSON::stringify(&preset_params("outdoor_hellinger").unwrap()).unwrap();
     assert!(String::from(hellinger).contains("\"metric\":\"hellinger\""));
     let warehouse = js_sys::JSON::stringify(&preset_params("warehouse").unwrap()).unwrap();
@@ -331,6 +331,9 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     assert!(String::from(searched).contains("\"iron\""));
     let objects = js_sys::JSON::stringify(&preset_params("indoor_objects").unwrap()).unwrap();
     assert!(String::from(objects).contains("\"objects\""));
+    let types = js_sys::JSON::stringify(&preset_params("indoor_object_types").unwrap()).unwrap();
+    let types = String::from(types);
+    assert!(types.contains("\"object_types\"") && types.contains("\"object_layout\""));
     let bad = js_sys::JSON::parse(r#"{"voxel_size": -2}"#).unwrap();
     let e = message(validate_params(bad, None).err().unwrap());
     assert!(e.contains("voxel_size"), "{e}");
