@@ -171,11 +171,19 @@ fn run_on(
 
 /// Per config, the mean over the rows of each row's mean over its seeds
 /// (every row has the same seeds, so the mean over the sets).
-fn means(sets: &[SetFigures], figure: impl Fn(&SetFigures) -> &Vec<f64>) -> Vec<f64> {
-    let n = configs().len();
-    (0..n)
-        .map(|c| sets.iter().map(|s| figure(s)[c]).sum::<f64>() / sets.len() as f64)
-        .collect()
+fn means<'a>(
+    sets: impl IntoIterator<Item = &'a SetFigures>,
+    figure: impl Fn(&SetFigures) -> &Vec<f64>,
+) -> Vec<f64> {
+    let mut sum = vec![0.0; configs().len()];
+    let mut n = 0;
+    for s in sets {
+        for (t, v) in sum.iter_mut().zip(figure(s)) {
+            *t += v;
+        }
+        n += 1;
+    }
+    sum.iter().map(|t| t / n as f64).collect()
 }
 
 fn table(o: &mut String, sets: &[SetFigures]) {
@@ -195,19 +203,12 @@ fn table(o: &mut String, sets: &[SetFigures]) {
         }
     }
     for (family, sensor) in &rows {
-        let of_row: Vec<SetFigures> = (sets.iter())
+        let of_row: Vec<&SetFigures> = (sets.iter())
             .filter(|s| &s.family == family && &s.sensor == sensor)
-            .map(|s| SetFigures {
-                family: s.family.clone(),
-                sensor: s.sensor.clone(),
-                seed: s.seed,
-                seeded: s.seeded.clone(),
-                nearest: s.nearest.clone(),
-            })
             .collect();
         let (seeded, nearest) = (
-            means(&of_row, |s| &s.seeded),
-            means(&of_row, |s| &s.nearest),
+            means(of_row.iter().copied(), |s| &s.seeded),
+            means(of_row.iter().copied(), |s| &s.nearest),
         );
         let _ = write!(o, "| {family}, {sensor} |");
         for (a, b) in seeded.iter().zip(&nearest) {

@@ -26,8 +26,8 @@
 //! bin). The constants were fixed in the twenty-sixth round's plan
 //! (docs/seeds.md) before any run.
 
-use super::objects::{contents_of, Contents, Piece};
-use super::parts::{empty_channels, soft_bin, unit_sum};
+use super::objects::{contents_of, of_pieces_or_empty, Contents, Piece};
+use super::parts::{soft_bin, unit_sum};
 use super::polar::PolarScan;
 use std::f32::consts::{FRAC_PI_2, PI};
 
@@ -51,10 +51,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
 
 /// The part of a scan's pieces (cut once for the parts that read them).
 pub(crate) fn of_contents(contents: Option<&Contents>) -> Vec<f32> {
-    match contents {
-        Some(c) if !c.pieces.is_empty() => of_pieces(&c.pieces),
-        _ => empty_channels(&CHANNELS),
-    }
+    of_pieces_or_empty(contents, &CHANNELS, of_pieces)
 }
 
 /// The channels of at least one piece.

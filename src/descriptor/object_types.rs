@@ -28,8 +28,8 @@
 //! tells them apart. The constants were fixed in the twenty-sixth round's
 //! plan (docs/seeds.md) before any run.
 
-use super::objects::{contents_of, Contents, Piece};
-use super::parts::{empty_channels, soft_bin, unit_sum};
+use super::objects::{contents_of, of_pieces_or_empty, Contents, Piece};
+use super::parts::{soft_bin, unit_sum};
 use super::polar::PolarScan;
 
 /// Bins of each channel: the classes' shares, then each class's tops.
@@ -53,10 +53,7 @@ pub fn describe_scan(scan: &PolarScan) -> Vec<f32> {
 
 /// The part of a scan's pieces (cut once for the parts that read them).
 pub(crate) fn of_contents(contents: Option<&Contents>) -> Vec<f32> {
-    match contents {
-        Some(c) if !c.pieces.is_empty() => of_pieces(&c.pieces),
-        _ => empty_channels(&CHANNELS),
-    }
+    of_pieces_or_empty(contents, &CHANNELS, of_pieces)
 }
 
 /// A piece's footprint class.

@@ -137,6 +137,19 @@ pub(crate) struct Contents {
     pub seen: usize,
 }
 
+/// `of_pieces` of a scan's pieces where it has any; else every channel's
+/// mass in bin 0 (the parts that describe the pieces otherwise).
+pub(crate) fn of_pieces_or_empty(
+    contents: Option<&Contents>,
+    channels: &[usize],
+    of_pieces: fn(&[Piece]) -> Vec<f32>,
+) -> Vec<f32> {
+    match contents {
+        Some(c) if !c.pieces.is_empty() => of_pieces(&c.pieces),
+        _ => empty_channels(channels),
+    }
+}
+
 /// The pieces of what stands in the room, as this part cuts them (the
 /// `object_types` and `object_layout` parts describe the same pieces
 /// otherwise); `None` when the scan shows no floor.

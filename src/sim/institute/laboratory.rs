@@ -340,7 +340,7 @@ fn stool(s: &mut Vec<Shape>, c: [f64; 2], seat: f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::institute::tests::{gap, room, size};
+    use crate::sim::institute::tests::{gap, room, size, top_run};
     use crate::sim::office_floor::boxes;
 
     #[test]
@@ -352,11 +352,7 @@ mod tests {
             let ([w, d, h], s) = room("laboratory", &mut r);
             let b = boxes(&s);
             // Tops 0.04 m thick at 0.88-0.92 m: 4 m of them at least.
-            let run: f64 = b
-                .iter()
-                .filter(|b| (0.88..=0.92).contains(&b.1[2]) && (size(b)[2] - 0.04).abs() < 1e-9)
-                .map(|b| size(b)[0].max(size(b)[1]))
-                .sum();
+            let run = top_run(&b, 0.88..=0.92, 0.04);
             assert!(run >= 4.0, "{w:.2} x {d:.2}: {run} m of bench");
             // A fume hood's upper body: 0.9 m deep against a side wall or
             // the window wall, from 1.8-1.95 m to 2.3-2.5 m; an exhaust

@@ -311,6 +311,19 @@ mod tests {
         ]
     }
 
+    /// The summed length of the boxes `thick` m thick whose tops lie in
+    /// `tops` (bench and workbench runs).
+    pub(super) fn top_run(
+        b: &[([f64; 3], [f64; 3])],
+        tops: std::ops::RangeInclusive<f64>,
+        thick: f64,
+    ) -> f64 {
+        b.iter()
+            .filter(|b| tops.contains(&b.1[2]) && (size(b)[2] - thick).abs() < 1e-9)
+            .map(|b| size(b)[0].max(size(b)[1]))
+            .sum()
+    }
+
     pub(super) fn size(b: &([f64; 3], [f64; 3])) -> [f64; 3] {
         [b.1[0] - b.0[0], b.1[1] - b.0[1], b.1[2] - b.0[2]]
     }

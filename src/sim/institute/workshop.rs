@@ -393,7 +393,7 @@ fn assembly_table(s: &mut Vec<Shape>, r: &mut ChaCha8Rng, m: &Machine) -> f64 {
 mod tests {
     use super::*;
     use crate::sim::hotel::extent;
-    use crate::sim::institute::tests::{draw, gap, size};
+    use crate::sim::institute::tests::{draw, gap, size, top_run};
     use crate::sim::office_floor::boxes;
 
     #[test]
@@ -406,11 +406,7 @@ mod tests {
             let machines = workshop(w, d, h, &mut r, &mut s);
             let b = boxes(&s);
             // Workbench tops, 0.05 m thick at 0.88-0.95 m: 2 m at least.
-            let run: f64 = b
-                .iter()
-                .filter(|b| (0.88..=0.95).contains(&b.1[2]) && (size(b)[2] - 0.05).abs() < 1e-9)
-                .map(|b| size(b)[0].max(size(b)[1]))
-                .sum();
+            let run = top_run(&b, 0.88..=0.95, 0.05);
             assert!(run >= 2.0, "{w:.2} x {d:.2}: {run} m of workbench");
             // Steel shelving: corner posts to 1.8-2.2 m.
             let shelving = b.iter().any(|b| {
