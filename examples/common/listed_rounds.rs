@@ -2,7 +2,7 @@
 //! random order (the twentieth round on): what a row holds, how a round
 //! runs its families on its seeds, and the checks and table they share.
 //! Used by `order_free_round.rs` (rounds 20-22) and
-//! `fresh_family_round.rs` (round 23).
+//! `fresh_family_round/` (round 23).
 
 use crate::families::*;
 use crate::preset_rounds;
