@@ -175,8 +175,16 @@ pub fn sections(
     seeding_table(o, dev)
 }
 
-/// The twenty-sixth round's rule on its candidate, on the institute rows.
-pub fn candidate_rule(o: &mut String, r: &Report) -> Res<()> {
+/// The rule on the candidate over `what`'s rows: withdrawn unless its mean
+/// with spectral seeding is above [`RULE_PRESET`]'s (the twenty-sixth
+/// round's); with `recommend_by` (the twenty-seventh round's), recommended
+/// in its place where above by at least that many points.
+pub fn candidate_rule(
+    o: &mut String,
+    r: &Report,
+    what: &str,
+    recommend_by: Option<f64>,
+) -> Res<()> {
     let (cand, ours) = (rows_of(r, CANDIDATE), rows_of(r, RULE_PRESET));
     if cand.is_empty() || cand.len() != ours.len() {
         return Err("the report lacks the candidate's rows".into());
@@ -185,12 +193,19 @@ pub fn candidate_rule(o: &mut String, r: &Report) -> Res<()> {
         over_rows(&cand, |x| &x.seeded),
         over_rows(&ours, |x| &x.seeded),
     );
-    let verdict = if c > b {
-        "above it, so the preset stays, an option no default uses"
-    } else {
-        "not above it, so the preset is withdrawn"
+    let verdict = match recommend_by {
+        _ if c <= b => "not above it, so the preset is withdrawn".to_string(),
+        Some(points) if 100.0 * (c - b) >= points => format!(
+            "above it by {} points (at least {points}), so the README's recommendation for sets of room scans names `{CANDIDATE}` with spectral seeding in place of `{RULE_PRESET}`",
+            gap(c, b)
+        ),
+        Some(points) => format!(
+            "above it by {} points (less than {points}), so the preset stays, an option no default uses",
+            gap(c, b)
+        ),
+        None => "above it, so the preset stays, an option no default uses".to_string(),
     };
-    writeln!(o, "- Over the {} institute rows, `{CANDIDATE}` with spectral seeding averages **{} %** against `{RULE_PRESET}`'s {} %: {verdict}.", cand.len(), pct(c), pct(b))?;
+    writeln!(o, "- Over the {} {what} rows, `{CANDIDATE}` with spectral seeding averages **{} %** against `{RULE_PRESET}`'s {} %: {verdict}.", cand.len(), pct(c), pct(b))?;
     let higher = (cand.iter().zip(&ours))
         .filter(|(x, y)| mean(&x.seeded) > mean(&y.seeded))
         .count();
@@ -200,4 +215,9 @@ pub fn candidate_rule(o: &mut String, r: &Report) -> Res<()> {
         cand.len()
     )?;
     Ok(())
+}
+
+/// The difference of two shares in points, from the unrounded means.
+fn gap(a: f64, b: f64) -> String {
+    format!("{:.1}", 100.0 * (a - b))
 }
