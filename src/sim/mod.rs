@@ -30,12 +30,17 @@
 //!   round by another hand, likewise); `institute`: research-institute
 //!   floors of laboratories, workshops, server rooms and seminar rooms
 //!   off a corridor ([`institute`], written for issue 18's twenty-sixth
-//!   round by another hand, likewise).
+//!   round by another hand, likewise); `gym`: sports-centre fitness
+//!   floors of cardio rooms, weights rooms, group-exercise studios and
+//!   changing rooms off a corridor ([`gym`], written for issue 18's
+//!   twenty-seventh round by a helper who chose the building and its
+//!   kinds, likewise).
 //!
 //! Sensors ride on a vehicle: on uneven ground they keep their height above
 //! the ground under the wheels and tilt with it (see [`terrain`]).
 
 pub mod geometry;
+pub mod gym;
 pub mod home;
 pub mod hospital;
 pub mod hotel;
@@ -92,6 +97,9 @@ pub enum SceneKind {
     /// Research-institute floors: a corridor, laboratories, workshops,
     /// server rooms and seminar rooms.
     Institute,
+    /// Sports-centre fitness floors: a corridor, cardio rooms, weights
+    /// rooms, group-exercise studios and changing rooms.
+    Gym,
 }
 
 impl std::str::FromStr for SceneKind {
@@ -108,8 +116,9 @@ impl std::str::FromStr for SceneKind {
             "mall" => Ok(SceneKind::Mall),
             "home" => Ok(SceneKind::Home),
             "institute" => Ok(SceneKind::Institute),
+            "gym" => Ok(SceneKind::Gym),
             other => invalid(format!(
-                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel, mall, home, institute)"
+                "unknown scene {other:?} (indoor, warehouse, outdoor, office-floor, school, hospital, hotel, mall, home, institute, gym)"
             )),
         }
     }
@@ -195,7 +204,8 @@ impl SimParams {
                 | SceneKind::Hotel
                 | SceneKind::Mall
                 | SceneKind::Home
-                | SceneKind::Institute => 24,
+                | SceneKind::Institute
+                | SceneKind::Gym => 24,
                 _ => DEFAULT_SEQUENCE_SCANS,
             },
             scans_per_room: match scene {
@@ -205,7 +215,8 @@ impl SimParams {
                 | SceneKind::Hotel
                 | SceneKind::Mall
                 | SceneKind::Home
-                | SceneKind::Institute => 3,
+                | SceneKind::Institute
+                | SceneKind::Gym => 3,
                 _ => 5,
             },
             lidar: None,
@@ -226,6 +237,7 @@ impl SimParams {
             SceneKind::Mall => self.scans * mall::MALL_KINDS.len(),
             SceneKind::Home => self.scans * home::HOME_KINDS.len(),
             SceneKind::Institute => self.scans * institute::INSTITUTE_KINDS.len(),
+            SceneKind::Gym => self.scans * gym::GYM_KINDS.len(),
             _ => self.scans,
         }
     }
@@ -409,6 +421,9 @@ impl Simulation {
             }
             SceneKind::Institute => {
                 (scenes_out, shots) = office_floor::scans(&institute::INSTITUTE, params, &mut r);
+            }
+            SceneKind::Gym => {
+                (scenes_out, shots) = office_floor::scans(&gym::GYM, params, &mut r);
             }
         }
         let mut order: Vec<usize> = (0..shots.len()).collect();

@@ -625,6 +625,56 @@ pub(super) fn has_free_spot(w: f64, d: f64, s: &[Shape]) -> bool {
     })
 }
 
+/// Check that every room of `kinds` of `plan` (300 a kind) has
+/// furniture, all of it inside the room, on the floor and under the
+/// ceiling, and that above where the floor tests look for the walls
+/// (0.15 m under the ceiling, with 0.1 m to spare) only cylinders of
+/// `slim` m radius or less reach (the floor families' fixture tests).
+#[cfg(test)]
+pub(super) fn assert_furniture_inside(
+    plan: &FloorPlan,
+    kinds: &[&str],
+    slim: f64,
+    r: &mut ChaCha8Rng,
+) {
+    use super::hotel::extent;
+    for kind in kinds {
+        for _ in 0..300 {
+            let ([w, d, h], s) = furnished_room(plan, kind, r);
+            assert!(!s.is_empty(), "{kind}: empty");
+            for shape in &s {
+                let (lo, hi, z0, z1) = extent(shape);
+                let inside =
+                    lo[0] >= -1e-9 && lo[1] >= -1e-9 && hi[0] <= w + 1e-9 && hi[1] <= d + 1e-9;
+                assert!(inside, "{kind} {w:.2} x {d:.2}: {shape:?} outside");
+                assert!(
+                    z0 >= -1e-9 && z1 <= h + 1e-9,
+                    "{kind}: {shape:?} at {z0}..{z1} m under {h}"
+                );
+                if z1 > h - 0.25 {
+                    assert!(
+                        matches!(shape, Shape::Cylinder { radius, .. } if *radius <= slim),
+                        "{kind}: {shape:?} under a ceiling at {h}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Check that every room of `kinds` of `plan` (300 a kind) leaves a free
+/// spot for a scan ([`has_free_spot`]; the floor families' fixture
+/// tests).
+#[cfg(test)]
+pub(super) fn assert_free_spots(plan: &FloorPlan, kinds: &[&str], r: &mut ChaCha8Rng) {
+    for kind in kinds {
+        for _ in 0..300 {
+            let ([w, d, _], s) = furnished_room(plan, kind, r);
+            assert!(has_free_spot(w, d, &s), "{kind} {w:.2} x {d:.2}");
+        }
+    }
+}
+
 /// Check that `plan` puts an open 0.9 m door of each of `kinds` 0.1 m
 /// or more from the room's ends, and that nothing stands within `swing`
 /// m of it inside the room (300 rooms a kind; the floor families' fixture

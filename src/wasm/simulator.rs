@@ -11,7 +11,7 @@ pub struct Simulator {
 #[wasm_bindgen]
 impl Simulator {
     /// `scene`: `indoor`, `warehouse` or `outdoor` (the paper's scenes), or
-    /// the floors `office-floor`, `school`, `hospital`, `hotel`, `mall`, `home` or `institute` (rooms along
+    /// the floors `office-floor`, `school`, `hospital`, `hotel`, `mall`, `home`, `institute` or `gym` (rooms along
     /// corridors, as `placecat simulate --scene`); `scans`: per kind for
     /// the room scenes, along the path otherwise; `buildings` (indoor):
     /// `one` (the default: rooms of a kind share a plan), `many` or
@@ -23,7 +23,7 @@ impl Simulator {
     #[wasm_bindgen(constructor)]
     pub fn new(
         #[wasm_bindgen(
-            unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\" | \"office-floor\" | \"school\" | \"hospital\" | \"hotel\" | \"mall\" | \"home\" | \"institute\""
+            unchecked_param_type = "\"indoor\" | \"warehouse\" | \"outdoor\" | \"office-floor\" | \"school\" | \"hospital\" | \"hotel\" | \"mall\" | \"home\" | \"institute\" | \"gym\""
         )]
         scene: &str,
         seed: f64,

@@ -1,10 +1,11 @@
 //! The scene families and sensors of the descriptor evaluation (issue 18):
 //! sensors by beam count, sensor heights, other room plans and the office,
-//! school, hospital, hotel, mall, home and institute floors, checked against
-//! geometry known in advance.
+//! school, hospital, hotel, mall, home, institute and gym floors, checked
+//! against geometry known in advance.
 
 use crate::cli_common::{fails, placecat, succeeds, tmp};
 use placecat::sim::geometry::{Ray, Shape};
+use placecat::sim::gym::{GYM, GYM_KINDS};
 use placecat::sim::home::{HOME, HOME_KINDS};
 use placecat::sim::hospital::{HOSPITAL, HOSPITAL_KINDS};
 use placecat::sim::hotel::{HOTEL, HOTEL_KINDS};
@@ -295,7 +296,8 @@ fn simulate_takes_a_sensor_a_height_and_the_office_floor() {
             && err.contains("hotel")
             && err.contains("mall")
             && err.contains("home")
-            && err.contains("institute"),
+            && err.contains("institute")
+            && err.contains("gym"),
         "{err}"
     );
 }
@@ -781,6 +783,77 @@ fn simulate_writes_institute_floors() {
     }
 }
 
+#[test]
+fn gym_rooms_have_the_sizes_they_say_and_walls_where_they_end() {
+    for seed in 1..=4 {
+        check_floor(&GYM, seed);
+    }
+}
+
+#[test]
+fn gym_floors_keep_the_school_defaults_and_hold_every_kind() {
+    let p = SimParams::new(SceneKind::Gym, 1);
+    assert_eq!((p.scans, p.scans_per_room), (24, 3));
+    assert_eq!(p.total(), 24 * GYM_KINDS.len());
+    assert_eq!("gym".parse::<SceneKind>().unwrap(), SceneKind::Gym);
+    assert_eq!(serde_json::to_string(&SceneKind::Gym).unwrap(), "\"gym\"");
+    assert_eq!(
+        serde_json::from_str::<SceneKind>("\"gym\"").unwrap(),
+        SceneKind::Gym
+    );
+    assert_eq!(
+        GYM_KINDS,
+        [
+            "corridor",
+            "cardio_room",
+            "weight_room",
+            "studio",
+            "changing_room"
+        ]
+    );
+    for seed in 1..=6 {
+        let mut r = placecat::rng::rng(seed);
+        let floor = office_floor::floor(&GYM, &mut r);
+        // One cardio room, one weights room, two changing rooms (one a
+        // row), studios in both rows (filling them); a sports centre's
+        // corridor, ceiling and room sizes.
+        let count = |kind: &str| floor.rooms.iter().filter(|r| r.kind == kind).count();
+        assert_eq!(count("cardio_room"), 1, "seed {seed}");
+        assert_eq!(count("weight_room"), 1, "seed {seed}");
+        assert_eq!(count("changing_room"), 2, "seed {seed}");
+        assert!(count("studio") >= 2, "seed {seed}");
+        let cw = floor.rooms[0].max[1] - floor.rooms[0].min[1];
+        assert!((2.0..=2.8).contains(&cw), "seed {seed}: corridor {cw} m");
+        assert!((3.0..=3.6).contains(&floor.height), "seed {seed}");
+        for room in &floor.rooms[1..] {
+            let w = room.max[0] - room.min[0];
+            let d = room.max[1] - room.min[1];
+            let (lo, hi) = match room.kind {
+                "cardio_room" | "weight_room" => (8.0, 14.0),
+                "studio" => (7.0, 12.0),
+                "changing_room" => (4.5, 8.0),
+                _ => (0.5, 7.0),
+            };
+            assert!((lo..=hi).contains(&w), "seed {seed}: {} {w} m", room.kind);
+            assert!((7.0..=9.5).contains(&d), "seed {seed}: {} {d} m", room.kind);
+        }
+    }
+}
+
+#[test]
+fn gym_scans_are_labelled_counted_and_stand_in_their_rooms() {
+    scans_are_labelled_counted_and_stand_in_their_rooms(SceneKind::Gym, &GYM, 2);
+    default_counts(SceneKind::Gym, &GYM_KINDS);
+}
+
+#[test]
+fn simulate_writes_gym_floors() {
+    let dir = writes_two_scans_of_each_kind("gym", &GYM_KINDS);
+    for i in 0..2 * GYM_KINDS.len() {
+        assert!(dir.join(format!("scan_{i:05}.ply")).is_file(), "scan {i}");
+    }
+}
+
 /// A digest of every scan of a small simulation: labels, rooms, poses and
 /// tilts to 1e-4 (m, radians) and returns to the millimetre (FNV-1a). Any
 /// change to what a family draws or casts moves it. The rays' directions
@@ -829,7 +902,8 @@ fn digest(scene: SceneKind, edit: impl FnOnce(&mut SimParams)) -> u64 {
 /// of the twenty-second round's test run (dbc39e2; the families it had),
 /// of the hotel's (ebee06a) and of the mall's (377fcbf); the home's
 /// were pinned as the family was written, before its round's one test
-/// run, and so were the institute's. A deliberate change of a generator
+/// run, and so were the institute's and the gym's. A deliberate change
+/// of a generator
 /// changes its digest here, and the reports that ran it must be run
 /// again.
 #[cfg(all(target_arch = "x86_64", target_os = "linux"))]
@@ -894,6 +968,11 @@ fn every_scene_family_casts_the_scans_its_rounds_were_judged_on() {
             "institute, 16 beams",
             digest(SceneKind::Institute, |p| p.lidar = Some(beams(16))),
         ),
+        ("gym", digest(SceneKind::Gym, |_| {})),
+        (
+            "gym, 32 beams",
+            digest(SceneKind::Gym, |p| p.lidar = Some(beams(32))),
+        ),
     ];
     let pinned: Vec<(&str, u64)> = vec![
         ("indoor", 7042316121394205695),
@@ -917,6 +996,8 @@ fn every_scene_family_casts_the_scans_its_rounds_were_judged_on() {
         ("home, 16 beams", 1576060517157972008),
         ("institute", 11870764431139219717),
         ("institute, 16 beams", 5938898577027666444),
+        ("gym", 3535176167417631734),
+        ("gym, 32 beams", 3618785187795789647),
     ];
     assert_eq!(got, pinned);
 }
@@ -949,6 +1030,7 @@ fn room_scans_stand_clear_of_what_reaches_the_sensor() {
         SceneKind::Mall,
         SceneKind::Home,
         SceneKind::Institute,
+        SceneKind::Gym,
     ];
     for scene in scenes {
         for seed in 1..=3 {

@@ -175,7 +175,7 @@ fn door(
 }
 
 /// A draw from `lo..hi`, or `lo` where that leaves nothing to draw from.
-fn between(r: &mut ChaCha8Rng, lo: f64, hi: f64) -> f64 {
+pub(in crate::sim) fn between(r: &mut ChaCha8Rng, lo: f64, hi: f64) -> f64 {
     if hi > lo {
         u(r, lo, hi)
     } else {
@@ -196,7 +196,7 @@ enum Wall {
 /// What stands against a wall, given by how far along the wall (from
 /// its end at x = 0 or y = 0) and how far out from it.
 #[derive(Clone, Copy, Debug)]
-struct Side {
+pub(in crate::sim) struct Side {
     wall: Wall,
     w: f64,
     d: f64,
@@ -204,7 +204,7 @@ struct Side {
 
 impl Side {
     /// The room's point `a` along the wall and `o` out from it.
-    fn point(&self, a: f64, o: f64) -> [f64; 2] {
+    pub(in crate::sim) fn point(&self, a: f64, o: f64) -> [f64; 2] {
         match self.wall {
             Wall::Left => [o, a],
             Wall::Right => [self.w - o, a],
@@ -215,7 +215,15 @@ impl Side {
 
     /// A box from `a` to `a + len` along the wall, `o` to `o + depth`
     /// out from it, `z` to `z + height` up.
-    fn block(&self, a: f64, len: f64, o: f64, depth: f64, z: f64, height: f64) -> Shape {
+    pub(in crate::sim) fn block(
+        &self,
+        a: f64,
+        len: f64,
+        o: f64,
+        depth: f64,
+        z: f64,
+        height: f64,
+    ) -> Shape {
         let [p, q] = [self.point(a, o), self.point(a + len, o + depth)];
         cuboid(
             [p[0].min(q[0]), p[1].min(q[1]), z],
@@ -224,7 +232,7 @@ impl Side {
     }
 
     /// An upright cylinder at `a` along the wall, `o` out from it.
-    fn cylinder(&self, a: f64, o: f64, radius: f64, z0: f64, z1: f64) -> Shape {
+    pub(in crate::sim) fn cylinder(&self, a: f64, o: f64, radius: f64, z0: f64, z1: f64) -> Shape {
         Shape::Cylinder {
             centre: self.point(a, o),
             radius,
@@ -236,7 +244,7 @@ impl Side {
 
 /// The four walls of a room `w` by `d`: x = 0, x = w, the window wall,
 /// the corridor wall.
-fn walls(w: f64, d: f64) -> [Side; 4] {
+pub(in crate::sim) fn walls(w: f64, d: f64) -> [Side; 4] {
     [Wall::Left, Wall::Right, Wall::Back, Wall::Front].map(|wall| Side { wall, w, d })
 }
 
@@ -292,8 +300,9 @@ fn store_room(w: f64, d: f64, h: f64, r: &mut ChaCha8Rng, s: &mut Vec<Shape>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::hotel::extent;
-    use crate::sim::office_floor::{assert_doors_swing_clear, furnished_room, has_free_spot};
+    use crate::sim::office_floor::{
+        assert_doors_swing_clear, assert_free_spots, assert_furniture_inside, furnished_room,
+    };
 
     /// A room of `kind` of a size drawn from the plan's ranges.
     pub(super) fn room(kind: &str, r: &mut ChaCha8Rng) -> ([f64; 3], Vec<Shape>) {
@@ -339,32 +348,11 @@ mod tests {
     #[test]
     fn furniture_stands_inside_its_room_on_the_floor_and_under_the_ceiling() {
         let mut r = crate::rng::rng(11);
-        for kind in INSTITUTE_KINDS.iter().skip(1).copied().chain(["storage"]) {
-            for _ in 0..300 {
-                let ([w, d, h], s) = room(kind, &mut r);
-                assert!(!s.is_empty(), "{kind}: empty");
-                for shape in &s {
-                    let (lo, hi, z0, z1) = extent(shape);
-                    let inside =
-                        lo[0] >= -1e-9 && lo[1] >= -1e-9 && hi[0] <= w + 1e-9 && hi[1] <= d + 1e-9;
-                    assert!(inside, "{kind} {w:.2} x {d:.2}: {shape:?} outside");
-                    assert!(
-                        z0 >= -1e-9 && z1 <= h + 1e-9,
-                        "{kind}: {shape:?} at {z0}..{z1} m under {h}"
-                    );
-                    // Above where the floor tests look for the walls (0.15
-                    // m under the ceiling) only slim ducts and rods reach:
-                    // fume-hood exhausts, a projector's rod, a tray's
-                    // hangers.
-                    if z1 > h - 0.25 {
-                        assert!(
-                            matches!(shape, Shape::Cylinder { radius, .. } if *radius <= 0.15),
-                            "{kind}: {shape:?} under a ceiling at {h}"
-                        );
-                    }
-                }
-            }
-        }
+        let mut kinds = INSTITUTE_KINDS[1..].to_vec();
+        kinds.push("storage");
+        // Above the ceiling's margin only slim ducts and rods reach:
+        // fume-hood exhausts, a projector's rod, a tray's hangers.
+        assert_furniture_inside(&INSTITUTE, &kinds, 0.15, &mut r);
     }
 
     #[test]
@@ -388,11 +376,6 @@ mod tests {
     #[test]
     fn every_room_leaves_a_free_spot_for_a_scan() {
         let mut r = crate::rng::rng(4);
-        for kind in &INSTITUTE_KINDS[1..] {
-            for _ in 0..300 {
-                let ([w, d, _], s) = room(kind, &mut r);
-                assert!(has_free_spot(w, d, &s), "{kind} {w:.2} x {d:.2}");
-            }
-        }
+        assert_free_spots(&INSTITUTE, &INSTITUTE_KINDS[1..], &mut r);
     }
 }

@@ -469,8 +469,9 @@ pub struct SensorArgs {
     #[arg(long)]
     sensor_height: Option<f64>,
     /// indoor, office-floor, school, hospital, hotel, mall, home,
-    /// institute: scans taken in each room (default 5 indoor, 3 on
-    /// office, school, hospital, hotel, mall, home and institute floors).
+    /// institute, gym: scans taken in each room (default 5 indoor, 3 on
+    /// office, school, hospital, hotel, mall, home, institute and gym
+    /// floors).
     #[arg(long)]
     scans_per_room: Option<usize>,
 }

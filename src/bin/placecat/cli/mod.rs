@@ -135,7 +135,7 @@ enum Command {
     /// Simulate lidar scans with ground truth: PLY scans, poses, labels.csv.
     Simulate {
         /// indoor, warehouse, outdoor, office-floor, school, hospital, hotel,
-        /// mall, home, institute.
+        /// mall, home, institute, gym.
         #[arg(long)]
         scene: String,
         /// Seeds the scene, the route and the sensor noise.
