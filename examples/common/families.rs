@@ -189,6 +189,19 @@ pub fn institute_family() -> Family {
     }
 }
 
+/// The sports-centre fitness floors (`--scene gym`), written for issue
+/// 18's twenty-seventh round by another hand, who chose the building and
+/// its kinds, on the hotel's sensor grid. Only that round's example uses
+/// it.
+#[allow(dead_code)]
+pub fn gym_family() -> Family {
+    Family {
+        name: "gym (fresh)",
+        scene: SceneKind::Gym,
+        ..hotel_family()
+    }
+}
+
 /// The room rows of issue 18's rounds 9-16: every family with rooms (the
 /// hospital floors last) with its own sensor, then each of its others.
 #[allow(dead_code)]

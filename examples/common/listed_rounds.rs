@@ -116,7 +116,7 @@ pub fn presets_of(f: &Family) -> &'static [&'static str] {
     match f.name {
         "warehouse" => WAREHOUSE_PRESETS,
         "outdoor" => OUTDOOR_PRESETS,
-        "institute (fresh)" => INSTITUTE_PRESETS,
+        "institute (fresh)" | "gym (fresh)" => INSTITUTE_PRESETS,
         _ => ROOM_PRESETS,
     }
 }

@@ -38,14 +38,25 @@
 //!     ... -- --institute         # test seeds 571-575, once: docs/fresh-family-4.{json,md}
 //!     ... -- --institute --render
 //!
+//! The twenty-seventh round (`--gym`) runs it on sports-centre fitness
+//! floors, a fifth family whose building and kinds another hand chose,
+//! with the candidate as the twenty-sixth round left it; its rules read
+//! the candidate on the gym rows and the recommendation on the five
+//! later families' rows pooled:
+//!
+//!     ... -- --gym --dev   # docs/fresh-family-5-dev.json
+//!     ... -- --gym         # test seeds 581-585, once: docs/fresh-family-5.{json,md}
+//!     ... -- --gym --render
+//!
 //! Each plan and rule was fixed in docs/seeds.md ("issue 18,
-//! twenty-third round" and the three after it) before its family existed. The development run
+//! twenty-third round" and the four after it) before its family existed. The development run
 //! checks the harness only: on the hospital's rows it must give every
 //! figure of the twenty-second round's development run. The test run
 //! refuses to overwrite its report.
 
 #[path = "../common/families.rs"]
 mod families;
+mod gym;
 mod home;
 mod hotel;
 mod institute;
@@ -78,6 +89,8 @@ const MALL_TEST_SEEDS: &[u64] = &[551, 552, 553, 554, 555];
 const HOME_TEST_SEEDS: &[u64] = &[561, 562, 563, 564, 565];
 /// The twenty-sixth round's, fixed in docs/seeds.md before any run.
 const INSTITUTE_TEST_SEEDS: &[u64] = &[571, 572, 573, 574, 575];
+/// The twenty-seventh round's, fixed in docs/seeds.md before any run.
+const FIFTH_TEST_SEEDS: &[u64] = &[581, 582, 583, 584, 585];
 /// The twenty-sixth round's candidate, judged against [`RULE_PRESET`].
 const CANDIDATE: &str = "indoor_object_types";
 /// The recommended preset, and the paper's.
@@ -98,7 +111,7 @@ struct Round {
     render: fn(&Report, &Report) -> Res<String>,
 }
 
-const ROUNDS: [Round; 4] = [
+const ROUNDS: [Round; 5] = [
     Round {
         flag: "",
         stem: "fresh-family",
@@ -126,6 +139,13 @@ const ROUNDS: [Round; 4] = [
         family: institute_family,
         test_seeds: INSTITUTE_TEST_SEEDS,
         render: institute::render,
+    },
+    Round {
+        flag: "--gym",
+        stem: "fresh-family-5",
+        family: gym_family,
+        test_seeds: FIFTH_TEST_SEEDS,
+        render: gym::render,
     },
 ];
 
