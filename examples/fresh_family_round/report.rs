@@ -175,16 +175,9 @@ pub fn sections(
     seeding_table(o, dev)
 }
 
-/// The rule on the candidate over `what`'s rows: withdrawn unless its mean
-/// with spectral seeding is above [`RULE_PRESET`]'s (the twenty-sixth
-/// round's); with `recommend_by` (the twenty-seventh round's), recommended
-/// in its place where above by at least that many points.
-pub fn candidate_rule(
-    o: &mut String,
-    r: &Report,
-    what: &str,
-    recommend_by: Option<f64>,
-) -> Res<()> {
+/// The candidate against [`RULE_PRESET`] over `what`'s rows with
+/// spectral seeding, and the verdict of `judge`.
+pub fn candidate_rule(o: &mut String, r: &Report, what: &str, judge: Judge) -> Res<()> {
     let (cand, ours) = (rows_of(r, CANDIDATE), rows_of(r, RULE_PRESET));
     if cand.is_empty() || cand.len() != ours.len() {
         return Err("the report lacks the candidate's rows".into());
@@ -193,19 +186,20 @@ pub fn candidate_rule(
         over_rows(&cand, |x| &x.seeded),
         over_rows(&ours, |x| &x.seeded),
     );
-    let verdict = match recommend_by {
-        _ if c <= b => "not above it, so the preset is withdrawn".to_string(),
-        Some(points) if 100.0 * (c - b) >= points => format!(
-            "above it by {} points (at least {points}), so the README's recommendation for sets of room scans names `{CANDIDATE}` with spectral seeding in place of `{RULE_PRESET}`",
+    let verdict = match judge {
+        Judge::Reading => String::new(),
+        _ if c <= b => ": not above it, so the preset is withdrawn".to_string(),
+        Judge::RecommendBy(points) if 100.0 * (c - b) >= points => format!(
+            ": above it by {} points (at least {points}), so the README's recommendation for sets of room scans names `{CANDIDATE}` with spectral seeding in place of `{RULE_PRESET}`",
             gap(c, b)
         ),
-        Some(points) => format!(
-            "above it by {} points (less than {points}), so the preset stays, an option no default uses",
+        Judge::RecommendBy(points) => format!(
+            ": above it by {} points (less than {points}), so the preset stays, an option no default uses",
             gap(c, b)
         ),
-        None => "above it, so the preset stays, an option no default uses".to_string(),
+        Judge::Withdraw => ": above it, so the preset stays, an option no default uses".to_string(),
     };
-    writeln!(o, "- Over the {} {what} rows, `{CANDIDATE}` with spectral seeding averages **{} %** against `{RULE_PRESET}`'s {} %: {verdict}.", cand.len(), pct(c), pct(b))?;
+    writeln!(o, "- Over the {} {what} rows, `{CANDIDATE}` with spectral seeding averages **{} %** against `{RULE_PRESET}`'s {} %{verdict}.", cand.len(), pct(c), pct(b))?;
     let higher = (cand.iter().zip(&ours))
         .filter(|(x, y)| mean(&x.seeded) > mean(&y.seeded))
         .count();
@@ -215,6 +209,17 @@ pub fn candidate_rule(
         cand.len()
     )?;
     Ok(())
+}
+
+/// What [`candidate_rule`] decides.
+pub enum Judge {
+    /// The twenty-sixth round's rule: withdrawn unless above.
+    Withdraw,
+    /// The twenty-seventh round's: withdrawn unless above, recommended in
+    /// place of [`RULE_PRESET`] where above by at least these points.
+    RecommendBy(f64),
+    /// No rule: the means only.
+    Reading,
 }
 
 /// The difference of two shares in points, from the unrounded means.
