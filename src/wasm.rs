@@ -124,12 +124,13 @@ fn descriptor_from_json(json: &str) -> crate::Result<Descriptor> {
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_NAMES: &'static str = r#"
-/** A parameter preset (paper Tab. II: indoor, outdoor; docs/design.md#variants: indoor_bands; the public C++ code's settings: perception_oru; with the extra parts of docs/parts.md: indoor_plus, warehouse, outdoor_plus, free_space, indoor_clutter; the Hellinger distance of docs/hellinger.md: outdoor_hellinger; with ranges from 2 m, docs/near-ranges.md: outdoor_near; with the columns part, docs/columns.md: indoor_columns; weighted by a search, docs/indoor-searched.md: indoor_searched; with the objects part, docs/room-objects.md: indoor_objects; with the objects by size and height and their layout, docs/object-types-dev.md: indoor_object_types). `presetNotes()` gives each one's one-line explanation. */
+/** A parameter preset (paper Tab. II: indoor, outdoor; docs/design.md#variants: indoor_bands; the public C++ code's settings: perception_oru; with the extra parts of docs/parts.md: indoor_plus, warehouse, outdoor_plus, free_space, indoor_clutter; the Hellinger distance of docs/hellinger.md: outdoor_hellinger; with ranges from 2 m, docs/near-ranges.md: outdoor_near; with the columns part, docs/columns.md: indoor_columns; weighted by a search, docs/indoor-searched.md: indoor_searched; with the objects part, docs/room-objects.md: indoor_objects; with the objects by size and height and their layout, docs/object-types-dev.md: indoor_object_types, withdrawn by docs/fresh-family-5.md). `presetNotes()` gives each one's one-line explanation. */
 export type Preset = "indoor" | "outdoor" | "indoor_bands" | "perception_oru" | "indoor_plus" | "warehouse" | "outdoor_plus" | "free_space" | "indoor_clutter" | "outdoor_hellinger" | "outdoor_near" | "indoor_columns" | "indoor_searched" | "indoor_objects" | "indoor_object_types";
-/** A preset's name and its one-line explanation. */
+/** A preset's name, its one-line explanation, and whether a later round withdrew it (kept so that earlier reports re-run; the page does not offer it). */
 export interface PresetNote {
     name: Preset;
     note: string;
+    withdrawn: boolean;
 }
 /** k-means seeding: random scans, stride ("deterministic": scan i*n/k), k-means++, or spectral (the means of spectral clustering's groups). */
 export type Seeding = "random" | "stride" | "deterministic" | "plusplus" | "spectral";
@@ -166,12 +167,16 @@ pub fn preset_params(
     params_to_js(&DescriptorParams::preset(name)?)
 }
 
-/// Every preset with its one-line explanation, in the order of the menu.
+/// Every preset with its one-line explanation and whether it was
+/// withdrawn, in the order of the menu.
 #[wasm_bindgen(js_name = presetNotes, unchecked_return_type = "PresetNote[]")]
 pub fn preset_notes() -> WasmResult<JsValue> {
     let notes: Vec<serde_json::Value> = crate::descriptor::PRESET_NOTES
         .iter()
-        .map(|(name, note)| serde_json::json!({ "name": name, "note": note }))
+        .map(|(name, note)| {
+            let withdrawn = crate::descriptor::WITHDRAWN_PRESETS.contains(name);
+            serde_json::json!({ "name": name, "note": note, "withdrawn": withdrawn })
+        })
         .collect();
     to_js(&notes)
 }

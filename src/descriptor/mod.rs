@@ -27,7 +27,7 @@ pub mod slice;
 
 pub use params::{
     preset_names, preset_note, Alignment, DescriptorParams, Metric, Normalisation, Scale, PRESETS,
-    PRESET_NOTES,
+    PRESET_NOTES, WITHDRAWN_PRESETS,
 };
 pub use parts::{Part, PartKind, PartValues};
 

@@ -402,6 +402,31 @@ test('a reload during processing keeps the results so far and the names', async 
   await h.page.screenshot({ path: join(ARTIFACTS, 'restored-after-reload.png') });
 });
 
+test('a session saved with a withdrawn preset restores with it, names and all; the menu does not offer it', async () => {
+  await afterRun(h.page, () => h.page.click('#demo-indoor'));
+  await h.page.locator('#legend input').first().fill('weights');
+  // A session saved before the preset was withdrawn: its stored preset.
+  await h.page.evaluate(() => new Promise((resolve, reject) => {
+    const open = indexedDB.open('placecat', 1);
+    open.onerror = () => reject(open.error);
+    open.onsuccess = () => {
+      const t = open.result.transaction(['sessions'], 'readwrite');
+      const store = t.objectStore('sessions');
+      store.get('last').onsuccess = (e) => store.put({ ...e.target.result, preset: 'indoor_object_types' });
+      t.oncomplete = () => { open.result.close(); resolve(undefined); };
+      t.onerror = () => reject(t.error);
+    };
+  }));
+  await h.page.reload();
+  await h.page.waitForFunction(() => document.body.dataset.ready === 'true');
+  assert.match(await h.page.textContent('#info'), /Restored 40 of 40 scans/);
+  assert.equal(await h.page.inputValue('#preset'), 'indoor_object_types');
+  assert.match(await h.page.inputValue('#advanced'), /object_layout/);
+  const offered = await h.page.$$eval('#preset option', (os) => os.filter((o) => !o.hidden).map((o) => o.value));
+  assert.ok(offered.includes('indoor_objects') && !offered.includes('indoor_object_types'), offered.join());
+  assert.match(await h.page.evaluate(() => localStorage.getItem('placecat:names:demo-indoor-1-8')), /weights/);
+});
+
 const HOLD = 20000; // long beside the 40 scans of the new run, even on a loaded machine
 /**
  * Start the outdoor demo (300 scans: the workers compute its Delta matrix,

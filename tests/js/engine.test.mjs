@@ -471,7 +471,7 @@ test('a worker frees the set of a tail when a task of another kind comes, or whe
   d.dispose();
 });
 
-test('the page offers every preset of the core, each with its one-line note as the option title', async () => {
+test('the page holds every preset of the core, each with its one-line note as the option title, and hides the withdrawn ones', async () => {
   const { readFile } = await import('node:fs/promises');
   const html = await readFile(new URL('../../www/index.html', import.meta.url), 'utf8');
   const menu = html.slice(html.indexOf('<select id="preset">'), html.indexOf('</select>', html.indexOf('<select id="preset">')));
@@ -479,4 +479,8 @@ test('the page offers every preset of the core, each with its one-line note as t
   const options = [...menu.matchAll(/<option value="([^"]+)" title="([^"]*)"/g)].map((m) => [m[1], unescape(m[2])]);
   const notes = wasm.presetNotes().map((/** @type {{name: string, note: string}} */ n) => [n.name, n.note]);
   assert.deepEqual(options, notes);
+  const hidden = [...menu.matchAll(/<option value="([^"]+)" title="[^"]*" hidden>/g)].map((m) => m[1]);
+  const withdrawn = wasm.presetNotes().filter((/** @type {{withdrawn: boolean}} */ n) => n.withdrawn).map((/** @type {{name: string}} */ n) => n.name);
+  assert.deepEqual(hidden, ['indoor_object_types']);
+  assert.deepEqual(withdrawn, hidden);
 });

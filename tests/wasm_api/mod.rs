@@ -334,6 +334,17 @@ fn wrong_arguments_throw_errors_naming_the_problem_and_the_module_stays_usable()
     let types = js_sys::JSON::stringify(&preset_params("indoor_object_types").unwrap()).unwrap();
     let types = String::from(types);
     assert!(types.contains("\"object_types\"") && types.contains("\"object_layout\""));
+    // Withdrawn by the twenty-seventh round, and said so; the others not.
+    let withdrawn: Vec<String> = (notes.iter())
+        .filter(|n| js_sys::Reflect::get(n, &"withdrawn".into()).unwrap() == true)
+        .map(|n| {
+            js_sys::Reflect::get(&n, &"name".into())
+                .unwrap()
+                .as_string()
+                .unwrap()
+        })
+        .collect();
+    assert_eq!(withdrawn, ["indoor_object_types"]);
     let bad = js_sys::JSON::parse(r#"{"voxel_size": -2}"#).unwrap();
     let e = message(validate_params(bad, None).err().unwrap());
     assert!(e.contains("voxel_size"), "{e}");
