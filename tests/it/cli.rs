@@ -283,6 +283,21 @@ fn describe_takes_the_sensor_height() {
     let v = read_json(&dir.join("d.json"));
     assert_eq!(v["params"]["sensor_height"], 1.15);
     assert_eq!(v["params"]["preset"], "indoor_columns");
+    // A withdrawn preset still describes, and says it is withdrawn; the
+    // others say nothing of the kind.
+    for (preset, withdrawn) in [("indoor_object_types", true), ("indoor_objects", false)] {
+        let out = succeeds(
+            placecat()
+                .args(["describe", "--preset", preset])
+                .arg(dir.join("s.ply"))
+                .arg("-o")
+                .arg(dir.join("w.json")),
+        );
+        let said = String::from_utf8_lossy(&out.stderr);
+        let note = format!("note: preset {preset} is withdrawn, not on the page's menu");
+        assert_eq!(said.contains(&note), withdrawn, "{said}");
+        assert_eq!(read_json(&dir.join("w.json"))["params"]["preset"], preset);
+    }
     let e = fails(
         placecat()
             .args(["describe", "--sensor-height", "0"])

@@ -110,6 +110,12 @@ pub fn run(
     bag_args: &BagArgs,
 ) -> Result<ExitCode> {
     let mut params = load_params(preset, params)?;
+    if placecat::descriptor::WITHDRAWN_PRESETS.contains(&params.preset.as_str()) {
+        // Kept so that earlier reports re-run; said, so that nobody picks
+        // it up as a recommendation.
+        let note = placecat::descriptor::preset_note(&params.preset).unwrap_or_default();
+        eprintln!("note: preset {} is {note}", params.preset);
+    }
     if sensor_height.is_some() {
         params.sensor_height = sensor_height;
         params.validate()?;
