@@ -178,8 +178,8 @@ pub fn home_family() -> Family {
 
 /// The research-institute floors (`--scene institute`), written for
 /// issue 18's twenty-sixth round by another hand after the twenty-fifth
-/// round's figures, on the hotel's sensor grid. Only that round's example
-/// uses it.
+/// round's figures, on the hotel's sensor grid. That round's example and
+/// the kinds look use it.
 #[allow(dead_code)]
 pub fn institute_family() -> Family {
     Family {
@@ -191,8 +191,8 @@ pub fn institute_family() -> Family {
 
 /// The sports-centre fitness floors (`--scene gym`), written for issue
 /// 18's twenty-seventh round by another hand, who chose the building and
-/// its kinds, on the hotel's sensor grid. Only that round's example uses
-/// it.
+/// its kinds, on the hotel's sensor grid. That round's example and the
+/// kinds look use it.
 #[allow(dead_code)]
 pub fn gym_family() -> Family {
     Family {

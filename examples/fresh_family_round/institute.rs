@@ -16,7 +16,7 @@ pub fn render(dev: &Report, test: &Report) -> Res<String> {
         o,
         "## The candidate's rule, computed on the institute rows, test seeds {test_seeds}\n"
     )?;
-    candidate_rule(&mut o, test, "institute", Judge::Withdraw)?;
+    candidate_rule(&mut o, test, "institute", Judge::WithdrawUnlessAbove)?;
     writeln!(
         o,
         "\n## The recommendation's rule, computed on the hotel, mall, home and institute rows pooled\n"

@@ -197,7 +197,7 @@ pub fn candidate_rule(o: &mut String, r: &Report, what: &str, judge: Judge) -> R
             ": above it by {} points (less than {points}), so the preset stays, an option no default uses",
             gap(c, b)
         ),
-        Judge::Withdraw => ": above it, so the preset stays, an option no default uses".to_string(),
+        Judge::WithdrawUnlessAbove => ": above it, so the preset stays, an option no default uses".to_string(),
     };
     writeln!(o, "- Over the {} {what} rows, `{CANDIDATE}` with spectral seeding averages **{} %** against `{RULE_PRESET}`'s {} %{verdict}.", cand.len(), pct(c), pct(b))?;
     let higher = (cand.iter().zip(&ours))
@@ -214,7 +214,7 @@ pub fn candidate_rule(o: &mut String, r: &Report, what: &str, judge: Judge) -> R
 /// What [`candidate_rule`] decides.
 pub enum Judge {
     /// The twenty-sixth round's rule: withdrawn unless above.
-    Withdraw,
+    WithdrawUnlessAbove,
     /// The twenty-seventh round's: withdrawn unless above, recommended in
     /// place of [`RULE_PRESET`] where above by at least these points.
     RecommendBy(f64),

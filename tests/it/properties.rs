@@ -257,9 +257,10 @@ proptest! {
     /// object_layout on a room of several pieces, where its channels are
     /// not constant: three long tables (1.8 x 0.5 m, roundness well below
     /// 0.5) standing parallel, turned about z by any angle, stay nearer to
-    /// themselves than to the same room with the middle table turned
-    /// across (the angle channel then holds 90 degrees), and any order of
-    /// the points gives the same part bit for bit.
+    /// themselves than to the same room with the middle table moved and
+    /// turned across (the angle channel then holds 90 degrees, the spacing
+    /// channel moves too), and any order of the points gives the same part
+    /// bit for bit.
     #[test]
     fn object_layout_of_parallel_tables_turns_with_the_scan(
         seed in 0u64..1000,
