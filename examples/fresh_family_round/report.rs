@@ -131,8 +131,8 @@ pub fn per_set(o: &mut String, r: &Report, preset: &str) -> Res<()> {
 }
 
 /// The rows of the earlier rounds' reports `earlier` (docs/`stem`.json)
-/// and of `last` as one report (the twenty-fourth and twenty-fifth
-/// rounds' rules read them pooled).
+/// and of `last` as one report (the rules from the twenty-fourth round
+/// on read them pooled).
 pub fn pooled(earlier: &[&str], last: &Report) -> Res<Report> {
     let mut all = Report {
         seeds: last.seeds.clone(),

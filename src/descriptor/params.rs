@@ -236,7 +236,8 @@ pub const PRESET_NOTES: [(&str, &str); 15] = [
 ];
 
 /// Presets a later round withdrew by a rule fixed before its run. The
-/// CLI, the wasm API and the npm package keep them, so that the reports
+/// CLI, the wasm API, the npm and the Python packages keep them (the CLI
+/// says so when it describes with one), so that the reports
 /// that ran them run again; the page's menu holds them hidden, so that a
 /// session saved with one restores, and does not offer them.
 pub const WITHDRAWN_PRESETS: [&str; 1] = ["indoor_object_types"];
