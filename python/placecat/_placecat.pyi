@@ -41,6 +41,9 @@ def read_bytes(
 def presets() -> List[str]:
     """The names of the descriptor parameter presets."""
 
+def preset_notes() -> List[Dict[str, Any]]:
+    """Every preset's name, one-line note and whether it was withdrawn."""
+
 def params(params: _Params = None) -> Dict[str, Any]:
     """Descriptor parameters: a preset's, or overrides over one."""
 

@@ -143,6 +143,20 @@ fn presets() -> Vec<&'static str> {
     placecat::descriptor::preset_names()
 }
 
+/// Every preset with its one-line explanation and whether a later round
+/// withdrew it (kept so that earlier reports re-run): dicts with `name`,
+/// `note` and `withdrawn`, in the order of `presets()`.
+#[pyfunction]
+fn preset_notes<'py>(py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    let notes: Vec<serde_json::Value> = (placecat::descriptor::PRESET_NOTES.iter())
+        .map(|(name, note)| {
+            let withdrawn = placecat::descriptor::WITHDRAWN_PRESETS.contains(name);
+            serde_json::json!({ "name": name, "note": note, "withdrawn": withdrawn })
+        })
+        .collect();
+    to_py(py, &notes)
+}
+
 /// Descriptor parameters as a dict: a preset's (`params("outdoor")`), or a
 /// dict of overrides put over `indoor` (or over the preset named by its
 /// "preset" key), checked as the CLI's `--params` file is.
@@ -171,6 +185,7 @@ fn _placecat(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read, m)?)?;
     m.add_function(wrap_pyfunction!(read_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
+    m.add_function(wrap_pyfunction!(preset_notes, m)?)?;
     m.add_function(wrap_pyfunction!(params, m)?)?;
     m.add_function(wrap_pyfunction!(evaluate, m)?)?;
     descriptor::register(m)?;

@@ -105,6 +105,12 @@ def test_params_merge_like_the_cli():
     assert set(placecat.presets()) >= {"indoor", "outdoor"}
     for name in placecat.presets():  # presets come from the core's table
         assert placecat.params(name)["voxel_size"] > 0
+    notes = placecat.preset_notes()
+    assert [n["name"] for n in notes] == placecat.presets()
+    assert all(n["note"] for n in notes)
+    # Withdrawn by issue 18's twenty-seventh round, still described with.
+    assert [n["name"] for n in notes if n["withdrawn"]] == ["indoor_object_types"]
+    assert placecat.params("indoor_object_types")["preset"] == "indoor_object_types"
 
 
 def test_descriptors_models_and_collections_pickle(room):
