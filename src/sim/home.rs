@@ -31,9 +31,8 @@
 //! bathroom, and bedrooms in the rest of its rows.
 
 use super::geometry::{cuboid, Shape};
-use super::hotel::{dining_chair, dining_table};
-use super::office_floor::FloorPlan;
-use super::plans::place;
+use super::hotel::{dining_chair, dining_table, door_unless_shut};
+use super::office_floor::{mirrored_in_one_of_two, FloorPlan};
 use super::scenes::{bookcase, chair, table, u, Frame};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -91,11 +90,7 @@ fn furnish(kind: &str, [w, d, h]: [f64; 3], r: &mut ChaCha8Rng, s: &mut Vec<Shap
         "bathroom" => bathroom(w, d, r, &mut t),
         _ => closet(w, d, h, r, &mut t),
     }
-    let mirror = r.random::<bool>();
-    s.extend(
-        t.iter()
-            .map(|p| place(p, [mirror, false], [if mirror { w } else { 0.0 }, 0.0])),
-    );
+    mirrored_in_one_of_two(&t, w, r, s);
 }
 
 /// Where a room's door goes: shut in half the bathrooms, two bedrooms of
@@ -118,10 +113,7 @@ fn door(
         "living_room" | "kitchen" => 0.25,
         _ => 0.8,
     };
-    if r.random::<f64>() < shut {
-        return None;
-    }
-    super::hotel::door_in_clear_span(width, door, SWING, furniture, r)
+    door_unless_shut(shut, width, door, SWING, furniture, r)
 }
 
 /// A table lamp standing at `c` on a top at `z`: a stem and a shade.

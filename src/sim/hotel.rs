@@ -20,8 +20,7 @@
 //! along the wall in a room that leaves no such stretch.
 
 use super::geometry::{cuboid, Shape};
-use super::office_floor::FloorPlan;
-use super::plans::place;
+use super::office_floor::{mirrored_in_one_of_two, FloorPlan};
 use super::scenes::{chair, u, Frame};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -106,10 +105,24 @@ fn door(
         "guest_room" => 0.6,
         _ => 0.25,
     };
+    door_unless_shut(shut, width, door, DOORWAY, furniture, r)
+}
+
+/// A room's door: shut with probability `shut` (one draw of `r`; no
+/// doorway to scan through), else where [`door_in_clear_span`] puts it.
+/// The floor families' `door` rules differ only in `shut` and `depth`.
+pub(super) fn door_unless_shut(
+    shut: f64,
+    width: f64,
+    door: f64,
+    depth: f64,
+    furniture: &[Shape],
+    r: &mut ChaCha8Rng,
+) -> Option<f64> {
     if r.random::<f64>() < shut {
         return None;
     }
-    door_in_clear_span(width, door, DOORWAY, furniture, r)
+    door_in_clear_span(width, door, depth, furniture, r)
 }
 
 /// Where a door `door` wide goes along a wall `width` long: uniform over
@@ -308,11 +321,7 @@ fn guest_room(w: f64, d: f64, h: f64, r: &mut ChaCha8Rng, s: &mut Vec<Shape>) ->
         let x = if left { 0.05 } else { w - 0.05 - pw };
         t.push(cuboid([x, d - 0.16, 0.0], [pw, 0.12, h - 0.25]));
     }
-    let mirror = r.random::<bool>();
-    s.extend(
-        t.iter()
-            .map(|p| place(p, [mirror, false], [if mirror { w } else { 0.0 }, 0.0])),
-    );
+    mirrored_in_one_of_two(&t, w, r, s);
     bathroom_shapes
 }
 
@@ -761,11 +770,7 @@ fn lobby(w: f64, d: f64, h: f64, r: &mut ChaCha8Rng, s: &mut Vec<Shape>) {
     if r.random::<f64>() < 0.4 {
         luggage_trolley(&mut t, &Frame::at(rx + rl + 1.5, d - 0.45, u(r, -0.1, 0.1)));
     }
-    let mirror = r.random::<bool>();
-    s.extend(
-        t.iter()
-            .map(|p| place(p, [mirror, false], [if mirror { w } else { 0.0 }, 0.0])),
-    );
+    mirrored_in_one_of_two(&t, w, r, s);
 }
 
 /// A seating group `gw` wide centred at `c`: a sofa facing a low table

@@ -25,8 +25,7 @@
 
 use super::geometry::{cuboid, Shape};
 use super::hotel::{dining_chair, dining_table, round_table};
-use super::office_floor::FloorPlan;
-use super::plans::place;
+use super::office_floor::{mirrored_in_one_of_two, FloorPlan};
 use super::scenes::{bookcase, chair, table, u, Frame};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -405,11 +404,7 @@ fn cafe(w: f64, d: f64, r: &mut ChaCha8Rng, s: &mut Vec<Shape>) {
         }
         y += py;
     }
-    let mirror = r.random::<bool>();
-    s.extend(
-        t.iter()
-            .map(|p| place(p, [mirror, false], [if mirror { w } else { 0.0 }, 0.0])),
-    );
+    mirrored_in_one_of_two(&t, w, r, s);
 }
 
 /// A café table at `c`: a round one for two or a square one for two to

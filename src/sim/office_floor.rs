@@ -495,6 +495,17 @@ fn furnish(kind: &str, [w, d, _h]: [f64; 3], r: &mut ChaCha8Rng, s: &mut Vec<Sha
     }
 }
 
+/// A room's furniture `t`, laid out from its x = 0 wall (the room `w`
+/// wide), into `s`, mirrored about the room's middle in one room of two
+/// (one draw of `r`), so that layouts face either way along the corridor.
+pub(super) fn mirrored_in_one_of_two(t: &[Shape], w: f64, r: &mut ChaCha8Rng, s: &mut Vec<Shape>) {
+    let mirror = r.random::<bool>();
+    s.extend(
+        t.iter()
+            .map(|p| place(p, [mirror, false], [if mirror { w } else { 0.0 }, 0.0])),
+    );
+}
+
 /// Corridor fittings: pilasters and notice boards on both walls, a bench
 /// or a printer now and then.
 fn corridor_fittings(length: f64, cw: f64, h: f64, r: &mut ChaCha8Rng, s: &mut Vec<Shape>) {

@@ -83,10 +83,9 @@ mod studio;
 mod weight_room;
 
 use super::geometry::{cuboid, Shape};
-use super::hotel::door_in_clear_span;
+use super::hotel::door_unless_shut;
 use super::institute::{between, walls};
-use super::office_floor::FloorPlan;
-use super::plans::place;
+use super::office_floor::{mirrored_in_one_of_two, FloorPlan};
 use super::scenes::u;
 use cardio_room::cardio_room;
 use changing_room::changing_room;
@@ -155,11 +154,7 @@ fn furnish(kind: &str, [w, d, h]: [f64; 3], r: &mut ChaCha8Rng, s: &mut Vec<Shap
         "changing_room" => changing_room(w, d, h, r, &mut t),
         _ => equipment_store(w, d, h, r, &mut t),
     }
-    let mirror = r.random::<bool>();
-    s.extend(
-        t.iter()
-            .map(|p| place(p, [mirror, false], [if mirror { w } else { 0.0 }, 0.0])),
-    );
+    mirrored_in_one_of_two(&t, w, r, s);
 }
 
 /// Where a room's door goes: shut in seven changing rooms of ten (their
@@ -183,10 +178,7 @@ fn door(
         "weight_room" => 0.25,
         _ => 0.85,
     };
-    if r.random::<f64>() < shut {
-        return None;
-    }
-    door_in_clear_span(width, door, SWING, furniture, r)
+    door_unless_shut(shut, width, door, SWING, furniture, r)
 }
 
 // --- Equipment stores ---

@@ -63,9 +63,8 @@ mod server_room;
 mod workshop;
 
 use super::geometry::{cuboid, Shape};
-use super::hotel::door_in_clear_span;
-use super::office_floor::FloorPlan;
-use super::plans::place;
+use super::hotel::door_unless_shut;
+use super::office_floor::{mirrored_in_one_of_two, FloorPlan};
 use super::scenes::u;
 use corridor::corridor_fittings;
 use laboratory::laboratory;
@@ -139,11 +138,7 @@ fn furnish(kind: &str, [w, d, h]: [f64; 3], r: &mut ChaCha8Rng, s: &mut Vec<Shap
         }
         _ => store_room(w, d, h, r, &mut t),
     }
-    let mirror = r.random::<bool>();
-    s.extend(
-        t.iter()
-            .map(|p| place(p, [mirror, false], [if mirror { w } else { 0.0 }, 0.0])),
-    );
+    mirrored_in_one_of_two(&t, w, r, s);
 }
 
 /// Where a room's door goes: shut in four server rooms of five (kept
@@ -168,10 +163,7 @@ fn door(
         "seminar_room" => 0.35,
         _ => 0.8,
     };
-    if r.random::<f64>() < shut {
-        return None;
-    }
-    door_in_clear_span(width, door, SWING, furniture, r)
+    door_unless_shut(shut, width, door, SWING, furniture, r)
 }
 
 /// A draw from `lo..hi`, or `lo` where that leaves nothing to draw from.
