@@ -6,24 +6,11 @@ use super::*;
 use std::fmt::Write;
 
 pub fn render(dev: &Report, test: &Report) -> Res<String> {
-    let span = |s: &[u64]| format!("{}-{}", s[0], s[s.len() - 1]);
     let test_seeds = span(GYM_TEST_SEEDS);
-    let earlier = [
-        TEST_SEEDS,
-        MALL_TEST_SEEDS,
-        HOME_TEST_SEEDS,
-        INSTITUTE_TEST_SEEDS,
-    ]
-    .map(span);
-    let stems = [
-        "fresh-family",
-        "fresh-family-2",
-        "fresh-family-3",
-        "fresh-family-4",
-    ];
+    let earlier = earlier_seeds("--gym")?;
     // The two families no choice of the candidate looked at.
     let judged = pooled(&["fresh-family-4"], test)?;
-    let pooled = pooled(&stems, test)?;
+    let pooled = pooled_before("--gym", test)?;
     let mut o = String::new();
     writeln!(o, "# The candidate and the recommended room setting on a fifth family whose building and kinds another hand chose: sports-centre fitness floors (issue 18, twenty-seventh round)\n")?;
     writeln!(o, "**Why.** The twenty-sixth round's candidate `{CANDIDATE}` was judged on one family only, the research-institute floors (test seeds {}, docs/fresh-family-4.md: 89.3 against `{RULE_PRESET}`' 87.1 % with spectral seeding). That family was the easiest of the four written after the recommended setting (hotel {}, mall {}, home {}: 83.3, 64.1 and 76.3 %), and the plan that stated the candidate's hypothesis also named its kinds, so it was not independent of it. **What changed:** nothing in what is judged; every part, weight, preset and method is as the twenty-sixth round left them (commit 1d44b46). The simulator gained sports-centre fitness floors (`placecat simulate --scene gym`: the corridor, cardio rooms, weight rooms, studios, changing rooms; every room opens onto the corridor and is as deep as its row), written by another hand (a helper) in its own branch from a brief that named no descriptor, part, preset, figure or hypothesis and no building type or room kind: the helper chose the building and its four room kinds. It ran no descriptor or clustering on them. The plan and the rules were fixed in docs/seeds.md (\"issue 18, twenty-seventh round\") before the family existed or any run; this round's test run is the first description of the family. Rules, on the six new rows with spectral seeding: the candidate is withdrawn if its mean is not above `{RULE_PRESET}`'; if above by at least 1 point, the README's recommendation for sets of room scans names it in place of `{RULE_PRESET}`; otherwise it stays an option. Over the thirty hotel, mall, home, institute and new rows, if `{RULE_PRESET}` with spectral seeding has a mean below best of 10's with `{RULE_PRESET}`, the recommendation of spectral seeding for room sets is withdrawn; if below the paper's `{PAPER_PRESET}` with spectral seeding, the README says `{RULE_PRESET}` did not carry over.\n", earlier[3], earlier[0], earlier[1], earlier[2])?;

@@ -17,7 +17,6 @@ const NOTES: &str = "Written after the one test run (seeds 541-545, 2026-12-06 0
 - **Nothing in placecat changed** but the simulator's new family (and a door hook of the floor plans that keeps the other floors' scans byte-identical: the twenty-second round's development run re-ran to the same figures).";
 
 pub fn render(dev: &Report, test: &Report) -> Res<String> {
-    let span = |s: &[u64]| format!("{}-{}", s[0], s[s.len() - 1]);
     let test_seeds = span(TEST_SEEDS);
     let mut o = String::new();
     writeln!(o, "# The recommended room setting on a family written after it: hotel floors (issue 18, twenty-third round)\n")?;

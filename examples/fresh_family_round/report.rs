@@ -130,6 +130,31 @@ pub fn per_set(o: &mut String, r: &Report, preset: &str) -> Res<()> {
     Ok(())
 }
 
+/// Test seeds `s` as a span, "541-545".
+pub fn span(s: &[u64]) -> String {
+    format!("{}-{}", s[0], s[s.len() - 1])
+}
+
+/// The rounds run before the one of `flag`, in [`ROUNDS`]' order.
+fn rounds_before(flag: &str) -> Res<&'static [Round]> {
+    let at = (ROUNDS.iter().position(|r| r.flag == flag)).ok_or(format!("no round {flag}"))?;
+    Ok(&ROUNDS[..at])
+}
+
+/// The test seeds of the rounds before the one of `flag`, as spans.
+pub fn earlier_seeds(flag: &str) -> Res<Vec<String>> {
+    Ok(rounds_before(flag)?
+        .iter()
+        .map(|r| span(r.test_seeds))
+        .collect())
+}
+
+/// [`pooled`] over the reports of the rounds before the one of `flag`.
+pub fn pooled_before(flag: &str, last: &Report) -> Res<Report> {
+    let stems: Vec<&str> = rounds_before(flag)?.iter().map(|r| r.stem).collect();
+    pooled(&stems, last)
+}
+
 /// The rows of the earlier rounds' reports `earlier` (docs/`stem`.json)
 /// and of `last` as one report (the rules from the twenty-fourth round
 /// on read them pooled).
